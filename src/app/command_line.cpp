@@ -1,0 +1,108 @@
+#include "app/command_line.h"
+
+#include <charconv>
+
+namespace weft {
+namespace {
+
+// Parses all of `text` as a base-10 unsigned integer, or nothing.
+std::optional<std::uint64_t> parse_unsigned(const std::string& text) {
+    std::uint64_t value = 0;
+    const char* end = text.data() + text.size();
+    auto [stop, error] = std::from_chars(text.data(), end, value);
+    if (text.empty() || error != std::errc() || stop != end) return std::nullopt;
+    return value;
+}
+
+// Screenshots larger than 16384 pixels a side would need gigabytes of framebuffer.
+constexpr std::uint64_t max_image_side = 16384;
+
+}  // namespace
+
+std::variant<CommandLine, CommandLineError> parse_command_line(const std::vector<std::string>& args) {
+    CommandLine line;
+    for (std::size_t a = 0; a < args.size(); ++a) {
+        const std::string& arg = args[a];
+        // Options that take a value accept it as the next argument or after '='.
+        auto take_value = [&](const std::string& option) -> std::optional<std::string> {
+            if (arg.size() > option.size() && arg[option.size()] == '=')
+                return arg.substr(option.size() + 1);
+            if (arg != option || a + 1 >= args.size()) return std::nullopt;
+            return args[++a];
+        };
+        auto is_option = [&](const std::string& option) {
+            return arg == option || arg.rfind(option + "=", 0) == 0;
+        };
+        if (arg == "--help" || arg == "-h") {
+            line.help = true;
+        } else if (arg == "--headless") {
+            line.headless = true;
+        } else if (is_option("--set")) {
+            auto value = take_value("--set");
+            if (!value) return CommandLineError{"--set", "expects KEY=VALUE"};
+            line.overrides.push_back(*value);
+        } else if (is_option("--steps")) {
+            auto value = take_value("--steps");
+            auto steps = value ? parse_unsigned(*value) : std::nullopt;
+            if (!steps)
+                return CommandLineError{"--steps", "expects a whole number of steps >= 0, got '" +
+                                                       value.value_or("") + "'"};
+            line.steps = steps;
+        } else if (is_option("--dump")) {
+            auto value = take_value("--dump");
+            if (!value || value->empty()) return CommandLineError{"--dump", "expects a file name"};
+            line.dump_path = value;
+        } else if (is_option("--screenshot")) {
+            auto value = take_value("--screenshot");
+            if (!value || value->empty())
+                return CommandLineError{"--screenshot", "expects a file name"};
+            line.screenshot_path = value;
+        } else if (is_option("--size")) {
+            auto value = take_value("--size");
+            const std::string text = value.value_or("");
+            const auto x = text.find('x');
+            auto width = x == std::string::npos ? std::nullopt : parse_unsigned(text.substr(0, x));
+            auto height = x == std::string::npos ? std::nullopt : parse_unsigned(text.substr(x + 1));
+            if (!width || !height || *width < 1 || *height < 1 || *width > max_image_side ||
+                *height > max_image_side)
+                return CommandLineError{"--size", "expects WxH with 1 <= W, H <= 16384, got '" +
+                                                      text + "'"};
+            line.screenshot_width = static_cast<int>(*width);
+            line.screenshot_height = static_cast<int>(*height);
+        } else if (arg.rfind("-", 0) == 0 && arg.size() > 1) {
+            return CommandLineError{arg, "unknown option (see weft --help)"};
+        } else if (line.scene_path) {
+            return CommandLineError{arg, "only one scene file can be given (already have '" +
+                                             *line.scene_path + "')"};
+        } else {
+            line.scene_path = arg;
+        }
+    }
+    if (line.help) return line;
+    if (line.headless) {
+        if (!line.scene_path) return CommandLineError{"--headless", "needs a scene file"};
+        if (!line.steps) return CommandLineError{"--headless", "needs --steps N"};
+    } else {
+        const char* headless_only = line.steps             ? "--steps"
+                                    : line.dump_path       ? "--dump"
+                                    : line.screenshot_path ? "--screenshot"
+                                                           : nullptr;
+        if (headless_only) return CommandLineError{headless_only, "only applies with --headless"};
+    }
+    return line;
+}
+
+const char* usage_text() {
+    return "usage:\n"
+           "  weft [SCENE.toml] [--set KEY=VALUE]...\n"
+           "  weft --headless SCENE.toml --steps N [--set KEY=VALUE]... [--dump STATE.csv]\n"
+           "       [--screenshot IMAGE.png [--size WxH]]\n"
+           "\n"
+           "  --set KEY=VALUE   override a scene key by its dotted path, e.g. solver.dt=0.0005\n"
+           "  --steps N         run exactly N steps of the scene's dt (headless)\n"
+           "  --dump FILE       write row,col,x,y,z,vx,vy,vz per particle after the run\n"
+           "\n"
+           "exit status: 0 done, 2 bad input, 3 the simulation diverged\n";
+}
+
+}  // namespace weft

@@ -1,0 +1,36 @@
+// The command line of `weft` (contract in the design notes):
+//   weft [SCENE.toml] [--set KEY=VALUE]...
+//   weft --headless SCENE.toml --steps N [--set KEY=VALUE]... [--dump STATE.csv]
+//        [--screenshot IMAGE.png [--size WxH]]
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace weft {
+
+struct CommandLine {
+    bool headless = false;
+    bool help = false;
+    std::optional<std::string> scene_path;   // absent: the default scene
+    std::vector<std::string> overrides;      // "KEY=VALUE", in order
+    std::optional<std::uint64_t> steps;      // --steps N
+    std::optional<std::string> dump_path;    // --dump FILE.csv
+    std::optional<std::string> screenshot_path;
+    int screenshot_width = 1280;             // pixels, --size WxH
+    int screenshot_height = 720;
+};
+
+struct CommandLineError {
+    std::string where;  // the option at fault, e.g. "--steps"
+    std::string what;
+};
+
+std::variant<CommandLine, CommandLineError> parse_command_line(const std::vector<std::string>& args);
+
+const char* usage_text();
+
+}  // namespace weft

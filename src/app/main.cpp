@@ -1,0 +1,30 @@
+// weft: entry point. Parses the command line and hands over to the runner it asks for.
+#include <cstdio>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "app/command_line.h"
+#include "app/headless_runner.h"
+
+int main(int argc, char** argv) {
+    const std::vector<std::string> args(argv + 1, argv + argc);
+    auto parsed = weft::parse_command_line(args);
+    if (auto* error = std::get_if<weft::CommandLineError>(&parsed)) {
+        std::fprintf(stderr, "error: %s: %s\n", error->where.c_str(), error->what.c_str());
+        std::fprintf(stderr, "%s", weft::usage_text());
+        return weft::exit_bad_input;
+    }
+    const auto& command_line = std::get<weft::CommandLine>(parsed);
+    if (command_line.help) {
+        std::printf("%s", weft::usage_text());
+        return weft::exit_ok;
+    }
+    try {
+        if (command_line.headless) return weft::run_headless(command_line);
+        return weft::run_text_preview(command_line, WEFT_DEFAULT_SCENE);
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "error: out of memory\n");
+        return weft::exit_bad_input;
+    }
+}

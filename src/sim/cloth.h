@@ -1,0 +1,65 @@
+// Cloth: the general topology of a mass-spring cloth (particles, springs grouped by family,
+// triangles) as flat arrays, plus its per-step state (positions, velocities).
+//
+// Layout follows the loops that read it (Box2D v3 / Jolt style): the force pass walks one
+// spring group at a time over `{i, j, rest_length}` records and reads positions and
+// velocities by index; integrators walk the particle arrays linearly. Nothing here points
+// at anything else: springs and triangles refer to particles by index.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace weft {
+
+using Vec3 = glm::dvec3;
+
+enum class SpringFamily : std::uint8_t { structural, shear, bend };
+
+const char* spring_family_name(SpringFamily family);
+
+struct Spring {
+    std::uint32_t i;     // first particle
+    std::uint32_t j;     // second particle
+    double rest_length;  // m, length at which the spring exerts no elastic force
+};
+
+// All springs of one family share a material; a family the scene does not ask for has no
+// group at all, so it costs nothing in the force pass.
+struct SpringGroup {
+    SpringFamily family = SpringFamily::structural;
+    double stiffness = 0.0;  // N/m
+    double damping = 0.0;    // N·s/m, acts on the relative velocity along the spring
+    std::vector<Spring> springs;
+};
+
+struct Triangle {
+    std::uint32_t a, b, c;  // particle indices, counter-clockwise seen from the front side
+};
+
+struct Cloth {
+    int rows = 0;  // grid rows the cloth was built from (particle = row * cols + col)
+    int cols = 0;
+
+    // Per-step state.
+    std::vector<Vec3> positions;   // m
+    std::vector<Vec3> velocities;  // m/s
+
+    // Per-particle constants.
+    std::vector<double> masses;          // kg
+    std::vector<double> inverse_masses;  // 1/kg; 0 for a pinned particle, which never moves
+    std::vector<std::uint32_t> pinned;   // indices of pinned particles, ascending
+
+    // Topology.
+    std::vector<SpringGroup> spring_groups;  // only the families present
+    std::vector<Triangle> triangles;         // for drawing; two per grid cell
+
+    std::size_t particle_count() const { return positions.size(); }
+    std::size_t spring_count() const;
+    bool is_pinned(std::size_t particle) const { return inverse_masses[particle] == 0.0; }
+    const SpringGroup* find_group(SpringFamily family) const;
+};
+
+}  // namespace weft

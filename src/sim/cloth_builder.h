@@ -1,0 +1,16 @@
+// Builds a Cloth from a scene's cloth and spring settings. The grid is one builder of the
+// general topology; code that steps or draws the cloth only sees the flat arrays.
+#pragma once
+
+#include "sim/cloth.h"
+#include "sim/scene.h"
+
+namespace weft {
+
+// Particle (row, col) is index row * cols + col. Structural springs join (r,c)-(r,c+1) and
+// (r,c)-(r+1,c); shear springs both diagonals of every cell; bend springs (r,c)-(r,c+2) and
+// (r,c)-(r+2,c). Rest lengths are the distances in the initial, flat configuration.
+// Requires a validated scene with layout == grid.
+Cloth build_grid_cloth(const Scene& scene);
+
+}  // namespace weft

@@ -1,0 +1,48 @@
+#include "sim/force_pass.h"
+
+#include <cmath>
+#include <glm/geometric.hpp>
+
+namespace weft {
+
+void accumulate_spring_forces(const SpringGroup& group, std::span<const Vec3> positions,
+                              std::span<const Vec3> velocities, std::span<Vec3> forces) {
+    // Hoist the group's material and the base pointers out of the loop.
+    const double stiffness = group.stiffness;
+    const double damping = group.damping;
+    const Vec3* x = positions.data();
+    const Vec3* v = velocities.data();
+    Vec3* f = forces.data();
+    for (const Spring& spring : group.springs) {
+        const Vec3 d = x[spring.j] - x[spring.i];
+        const double length = std::sqrt(glm::dot(d, d));
+        if (length <= 0.0) continue;  // coincident ends: no direction to push along
+        const Vec3 u = d / length;
+        // Hooke's law plus a dashpot on the rate of change of length, (v_j - v_i) · u.
+        const double tension =
+            stiffness * (length - spring.rest_length) + damping * glm::dot(v[spring.j] - v[spring.i], u);
+        const Vec3 force_on_i = tension * u;
+        f[spring.i] += force_on_i;
+        f[spring.j] -= force_on_i;
+    }
+}
+
+void accumulate_forces(const Cloth& cloth, const ForceField& field,
+                       std::span<const Vec3> positions, std::span<const Vec3> velocities,
+                       std::span<Vec3> forces) {
+    const std::size_t count = positions.size();
+    const double* mass = cloth.masses.data();
+    const Vec3* v = velocities.data();
+    Vec3* f = forces.data();
+    // External forces first: they also initialise the accumulator.
+    if (field.air_drag != 0.0) {
+        for (std::size_t p = 0; p < count; ++p)
+            f[p] = mass[p] * field.gravity - field.air_drag * (v[p] - field.wind);
+    } else {
+        for (std::size_t p = 0; p < count; ++p) f[p] = mass[p] * field.gravity;
+    }
+    for (const SpringGroup& group : cloth.spring_groups)
+        accumulate_spring_forces(group, positions, velocities, forces);
+}
+
+}  // namespace weft

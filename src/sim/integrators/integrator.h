@@ -1,0 +1,54 @@
+// Integrators: one function per method, all with the same signature, all sharing the force
+// pass. Each advances cloth.positions and cloth.velocities by one step of dt seconds.
+//
+// Pinned particles have zero inverse mass, so every method leaves them exactly in place
+// with zero velocity.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "sim/cloth.h"
+#include "sim/force_pass.h"
+#include "sim/scene.h"
+
+namespace weft {
+
+// Scratch arrays and the history some methods carry from step to step. Sized once
+// (resize), so no method allocates inside a step.
+struct IntegratorWorkspace {
+    std::vector<Vec3> forces;              // N, output of the last force evaluation
+    std::vector<Vec3> accelerations;       // m/s², a_n carried between steps (Verlet family)
+    std::vector<Vec3> previous_positions;  // m, x_{n-1} (position Verlet)
+    std::vector<Vec3> stage_positions;     // m, RK4 stage state; velocity Verlet's prediction
+    std::vector<Vec3> stage_velocities;    // m/s
+    std::vector<Vec3> position_rate_sum;   // m/s, RK4's weighted sum k1 + 2 k2 + 2 k3 + k4
+    std::vector<Vec3> velocity_rate_sum;   // m/s²
+    // False whenever the carried history no longer belongs to the current state and dt: at
+    // the start, after a change of dt or integrator, or after the state was edited (a drag).
+    bool history_valid = false;
+    std::uint64_t force_evaluations = 0;  // total calls of the force pass, for cost studies
+
+    void resize(std::size_t particle_count);
+};
+
+// Runs the force pass into work.forces and counts it.
+void evaluate_forces(const Cloth& cloth, const ForceField& field, std::span<const Vec3> positions,
+                     std::span<const Vec3> velocities, IntegratorWorkspace& work);
+
+using StepFunction = void (*)(Cloth& cloth, const ForceField& field, double dt,
+                              IntegratorWorkspace& work);
+
+void step_explicit_euler(Cloth& cloth, const ForceField& field, double dt, IntegratorWorkspace& work);
+void step_symplectic_euler(Cloth& cloth, const ForceField& field, double dt, IntegratorWorkspace& work);
+void step_verlet(Cloth& cloth, const ForceField& field, double dt, IntegratorWorkspace& work);
+void step_velocity_verlet(Cloth& cloth, const ForceField& field, double dt, IntegratorWorkspace& work);
+void step_rk4(Cloth& cloth, const ForceField& field, double dt, IntegratorWorkspace& work);
+
+// The step function of a method; nullptr for one not implemented (implicit Euler).
+StepFunction step_function(Integrator integrator);
+
+// Force evaluations one step costs (the first step of the Verlets costs one more).
+int force_evaluations_per_step(Integrator integrator);
+
+}  // namespace weft

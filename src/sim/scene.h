@@ -1,0 +1,100 @@
+// Scene: the plain values a scene file describes (see docs/scene-format.md and the design
+// notes). No behaviour lives here: the loader fills it, build_cloth() and Simulation read it.
+// Every field has the default a scene file gets when it does not name the key.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace weft {
+
+using Vec3d = std::array<double, 3>;
+
+enum class Layout { grid, offset };
+enum class Orientation { vertical, horizontal };
+enum class PinPreset { none, top_corners, top_row, list };
+
+enum class Integrator {
+    explicit_euler,
+    symplectic_euler,
+    verlet,
+    velocity_verlet,
+    rk4,
+    implicit_euler,
+};
+
+enum class ColliderType { sphere, plane };
+enum class ContactResponse { impulse, repulsion };
+
+struct GridIndex {
+    int row = 0;
+    int col = 0;
+};
+
+struct ClothSpec {
+    int rows = 24;                                  // particles from top to bottom (>= 1)
+    int cols = 24;                                  // particles from left to right (>= 1)
+    double spacing = 0.05;                          // m, structural rest length (> 0)
+    double particle_mass = 0.01;                    // kg, every particle (> 0)
+    Layout layout = Layout::grid;
+    Orientation orientation = Orientation::vertical;
+    Vec3d origin = {0.0, 0.0, 0.0};                 // m, position of particle (0, 0)
+    PinPreset pin_preset = PinPreset::top_corners;
+    std::vector<GridIndex> pin_list;                // used when pin_preset == list
+};
+
+struct SpringFamilySpec {
+    bool enabled = false;      // structural springs are always enabled
+    double stiffness = 0.0;    // N/m
+    double damping = 0.0;      // N·s/m, along the spring
+};
+
+struct ForcesSpec {
+    Vec3d gravity = {0.0, -9.81, 0.0};  // m/s²
+    double air_drag = 0.0;              // N·s/m per particle: f = -air_drag (v - wind)
+    Vec3d wind = {0.0, 0.0, 0.0};       // m/s
+};
+
+struct SolverSpec {
+    Integrator integrator = Integrator::symplectic_euler;
+    double dt = 0.001;  // s (> 0)
+};
+
+struct ColliderSpec {
+    ColliderType type = ColliderType::sphere;
+    Vec3d center = {0.0, -1.0, 0.0};  // m, sphere
+    double radius = 0.3;              // m, sphere (> 0)
+    Vec3d point = {0.0, -1.0, 0.0};   // m, plane
+    Vec3d normal = {0.0, 1.0, 0.0};   // plane, unit length after loading
+    ContactResponse response = ContactResponse::impulse;
+    double restitution = 0.0;  // 0 = perfectly inelastic, 1 = elastic
+    double friction = 0.3;     // Coulomb coefficient (>= 0)
+};
+
+struct CameraSpec {
+    Vec3d position = {0.0, 0.0, 3.0};  // m
+    Vec3d target = {0.0, -0.5, 0.0};   // m
+    double fov_degrees = 50.0;         // vertical field of view, (0, 180)
+};
+
+struct Scene {
+    std::string name = "Untitled";
+    ClothSpec cloth;
+    SpringFamilySpec structural{true, 800.0, 0.5};
+    SpringFamilySpec shear{false, 400.0, 0.5};
+    SpringFamilySpec bend{false, 100.0, 0.1};
+    std::optional<double> tear_max_stretch;          // [tearing] max_stretch (> 1)
+    std::optional<double> strain_limit_max_stretch;  // [strain_limit] max_stretch (> 0)
+    std::optional<double> self_collision_thickness;  // [self_collision] thickness, m (> 0)
+    ForcesSpec forces;
+    SolverSpec solver;
+    std::vector<ColliderSpec> colliders;
+    CameraSpec camera;
+};
+
+// Canonical spelling of an integrator in scene files ("symplectic-euler", ...).
+const char* integrator_name(Integrator integrator);
+
+}  // namespace weft

@@ -1,0 +1,63 @@
+// Simulation: a cloth, the forces on it and the integrator that steps it, built from a
+// Scene. The one object the headless runner, the demo, the benchmarks and the tests drive.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "sim/cloth.h"
+#include "sim/force_pass.h"
+#include "sim/integrators/integrator.h"
+#include "sim/scene.h"
+
+namespace weft {
+
+struct StepReport {
+    std::size_t springs_torn = 0;           // springs that broke in this step
+    std::optional<std::string> divergence;  // why the state is no longer sound, if it is not
+    bool diverged() const { return divergence.has_value(); }
+};
+
+class Simulation {
+public:
+    // The scene must be validated (the loader does that). Throws std::invalid_argument for a
+    // valid scene that asks for something not modelled yet (see unsupported_feature).
+    explicit Simulation(const Scene& scene);
+
+    // Why a valid scene cannot be simulated by this build, or nothing.
+    static std::optional<std::string> unsupported_feature(const Scene& scene);
+
+    // Advances by one step of dt. Tearing, when the scene has it, is applied at the end of
+    // the step; then the divergence guard looks at the new state.
+    StepReport step();
+
+    double time() const { return time_; }  // s, simulated
+    std::uint64_t steps_taken() const { return steps_taken_; }
+    std::uint64_t force_evaluations() const { return workspace_.force_evaluations; }
+
+    const Cloth& cloth() const { return cloth_; }
+    const ForceField& force_field() const { return field_; }
+    const Scene& scene() const { return scene_; }
+    Integrator integrator() const { return integrator_; }
+    double dt() const { return dt_; }
+
+    void set_integrator(Integrator integrator);
+    void set_dt(double dt);
+    // Edits of the state from outside (drags, resets) go through here, so that methods that
+    // carry history (the Verlets) restart from the edited state.
+    Cloth& edit_cloth();
+
+private:
+    Scene scene_;
+    Cloth cloth_;
+    ForceField field_;
+    Integrator integrator_;
+    StepFunction step_function_;
+    double dt_;
+    IntegratorWorkspace workspace_;
+    double time_ = 0.0;
+    std::uint64_t steps_taken_ = 0;
+};
+
+}  // namespace weft

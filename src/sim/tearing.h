@@ -1,0 +1,16 @@
+// Tearing: a spring stretched past max_stretch × its rest length breaks.
+#pragma once
+
+#include <cstddef>
+
+#include "sim/cloth.h"
+
+namespace weft {
+
+// Removes every spring whose length exceeds max_stretch × rest length. All springs are
+// judged against the same state and removed together, so the result does not depend on
+// the order in which springs are visited. Order of the survivors is kept (locality, and
+// results that do not depend on which springs broke first). Returns the number removed.
+std::size_t tear_overstretched_springs(Cloth& cloth, double max_stretch);
+
+}  // namespace weft

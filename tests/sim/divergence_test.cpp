@@ -1,0 +1,64 @@
+// The divergence guard: blown-up states are caught with a reason, sound ones are not.
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "sim/cloth_builder.h"
+#include "sim/divergence.h"
+#include "sim/simulation.h"
+#include "test_scenes.h"
+
+namespace weft {
+namespace {
+
+Scene stiff_undamped_sheet(Integrator integrator, double dt) {
+    Scene scene;
+    scene.cloth.rows = 16;
+    scene.cloth.cols = 16;
+    scene.structural = {true, 20000.0, 0.0};
+    scene.shear = {true, 10000.0, 0.0};
+    scene.solver = {integrator, dt};
+    return scene;
+}
+
+TEST(DivergenceGuard, CatchesExplicitEulerOnAStiffUndampedSheet) {
+    Simulation simulation(stiff_undamped_sheet(Integrator::explicit_euler, 5e-4));
+    std::optional<std::string> reason;
+    for (int s = 0; s < 1000 && !reason; ++s) reason = simulation.step().divergence;
+    ASSERT_TRUE(reason.has_value());
+    EXPECT_NE(reason->find("particle (row "), std::string::npos) << *reason;
+}
+
+TEST(DivergenceGuard, StaysQuietWhileAStableRunSettles) {
+    // Same sheet, symplectic Euler, inside its stability limit (h ω_max < 2).
+    Simulation simulation(stiff_undamped_sheet(Integrator::symplectic_euler, 2e-4));
+    EXPECT_TRUE(testing::run_steps(simulation, 2000));
+}
+
+TEST(DivergenceGuard, ReportsNonFiniteValuesAndRunawayStretch) {
+    Scene scene;
+    scene.cloth.rows = 3;
+    scene.cloth.cols = 3;
+    Cloth cloth = build_grid_cloth(scene);
+    EXPECT_FALSE(find_divergence(cloth, true).has_value());
+
+    Cloth with_nan = cloth;
+    with_nan.velocities[4].y = std::numeric_limits<double>::quiet_NaN();
+    auto reason = find_divergence(with_nan, true);
+    ASSERT_TRUE(reason.has_value());
+    EXPECT_NE(reason->find("row 1, col 1"), std::string::npos) << *reason;
+    EXPECT_NE(reason->find("velocity"), std::string::npos) << *reason;
+
+    Cloth stretched = cloth;
+    stretched.positions[8].x += 5.5 * scene.cloth.spacing;  // the (2,1)-(2,2) spring: 6.5x
+    reason = find_divergence(stretched, true);
+    ASSERT_TRUE(reason.has_value());
+    EXPECT_NE(reason->find("rest length"), std::string::npos) << *reason;
+    // With tearing on, a long spring is not divergence: it is about to break.
+    EXPECT_FALSE(find_divergence(stretched, false).has_value());
+    stretched.positions[8].x -= 2.0 * scene.cloth.spacing;  // now 4.5x: still sound
+    EXPECT_FALSE(find_divergence(stretched, true).has_value());
+}
+
+}  // namespace
+}  // namespace weft

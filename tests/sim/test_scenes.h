@@ -1,0 +1,85 @@
+// Small scenes and exact solutions shared by the simulation tests.
+#pragma once
+
+#include <cmath>
+#include <string>
+
+#include "sim/scene.h"
+#include "sim/simulation.h"
+
+namespace weft::testing {
+
+inline constexpr Integrator all_integrators[] = {
+    Integrator::explicit_euler, Integrator::symplectic_euler, Integrator::verlet,
+    Integrator::velocity_verlet, Integrator::rk4};
+
+// One particle of mass m hanging from a pinned one by a single spring (rows = 2, cols = 1),
+// released at the spring's rest length, so it oscillates vertically about its equilibrium.
+struct HangingSpring {
+    double mass = 0.1;          // kg
+    double stiffness = 40.0;    // N/m      -> ω0 = 20 rad/s
+    double damping = 0.0;       // N·s/m, spring dashpot
+    double air_drag = 0.0;      // N·s/m
+    double rest_length = 0.1;   // m
+    double gravity = 9.81;      // m/s², downwards
+
+    Scene scene(Integrator integrator, double dt) const {
+        Scene s;
+        s.cloth.rows = 2;
+        s.cloth.cols = 1;
+        s.cloth.spacing = rest_length;
+        s.cloth.particle_mass = mass;
+        s.cloth.pin_preset = PinPreset::list;
+        s.cloth.pin_list = {{0, 0}};
+        s.structural = {true, stiffness, damping};
+        s.forces.gravity = {0.0, -gravity, 0.0};
+        s.forces.air_drag = air_drag;
+        s.solver = {integrator, dt};
+        return s;
+    }
+
+    double initial_velocity = 0.0;  // m/s, vertical velocity of the free particle at t = 0
+
+    // The scene's simulation with the initial velocity applied.
+    Simulation simulate(Integrator integrator, double dt) const {
+        Simulation simulation(scene(integrator, dt));
+        simulation.edit_cloth().velocities[1].y = initial_velocity;
+        return simulation;
+    }
+
+    // Closed form. With y the free particle's height (pin at y = 0):
+    //   m y'' = -k (y + L) - m g - (c + air_drag) y'
+    // so z = y - y_eq, y_eq = -L - m g / k, is an underdamped oscillator starting from
+    // z0 = m g / k (released at the rest length) with velocity v0:
+    //   z = e^{-γt} (A cos ωd t + B sin ωd t),  A = z0,  B = (v0 + γ z0) / ωd.
+    double equilibrium() const { return -rest_length - mass * gravity / stiffness; }
+    double gamma() const { return (damping + air_drag) / (2.0 * mass); }
+    double omega0() const { return std::sqrt(stiffness / mass); }
+    double omega_d() const { return std::sqrt(omega0() * omega0() - gamma() * gamma()); }
+    double cosine_amplitude() const { return mass * gravity / stiffness; }
+    double sine_amplitude() const { return (initial_velocity + gamma() * cosine_amplitude()) / omega_d(); }
+    double position(double t) const {
+        const double wd = omega_d(), a = cosine_amplitude(), b = sine_amplitude();
+        return equilibrium() + std::exp(-gamma() * t) * (a * std::cos(wd * t) + b * std::sin(wd * t));
+    }
+    double velocity(double t) const {
+        const double wd = omega_d(), g = gamma(), a = cosine_amplitude(), b = sine_amplitude();
+        return std::exp(-g * t) * ((b * wd - g * a) * std::cos(wd * t) - (a * wd + g * b) * std::sin(wd * t));
+    }
+};
+
+// "symplectic-euler" -> "symplecticeuler": a GoogleTest parameter name.
+inline std::string integrator_test_name(Integrator integrator) {
+    std::string name = integrator_name(integrator);
+    std::erase(name, '-');
+    return name;
+}
+
+// Runs `steps` steps; fails the calling test (returns false) on divergence.
+inline bool run_steps(Simulation& simulation, long long steps) {
+    for (long long s = 0; s < steps; ++s)
+        if (simulation.step().diverged()) return false;
+    return true;
+}
+
+}  // namespace weft::testing

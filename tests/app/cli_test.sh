@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# End-to-end tests of the weft command line: exit statuses, messages on stderr and the dump
+# format, as the design notes fix them. Usage: cli_test.sh WEFT_BINARY SOURCE_DIR
+set -uo pipefail
+weft=$1
+scenes=$2/assets/scenes
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+passes=0
+
+# expect STATUS STDERR_REGEX -- ARGS...: runs weft, checks its status and stderr.
+expect() {
+  local status=$1 pattern=$2
+  shift 3
+  local actual
+  timeout 60 "$weft" "$@" >"$work/out" 2>"$work/err"
+  actual=$?
+  if [ "$actual" -ne "$status" ] || ! grep -Eq -- "$pattern" "$work/err"; then
+    echo "FAIL: weft $*"
+    echo "  expected status $status and stderr matching: $pattern"
+    echo "  got status $actual, stderr:"; sed 's/^/    /' "$work/err" | head -5
+    failures=$((failures + 1))
+  else
+    passes=$((passes + 1))
+  fi
+}
+
+# check DESCRIPTION COMMAND...: a plain assertion.
+check() {
+  local description=$1
+  shift
+  if "$@"; then passes=$((passes + 1)); else echo "FAIL: $description"; failures=$((failures + 1)); fi
+}
+
+# The documented dump: header, then one row-major line per particle.
+expect 0 '^$' -- --headless "$scenes/hanging_sheet.toml" --steps 1000 --dump "$work/state.csv"
+check "dump header" test "$(head -1 "$work/state.csv")" = "row,col,x,y,z,vx,vy,vz"
+check "dump has 24x24 particle lines" test "$(tail -n +2 "$work/state.csv" | wc -l)" -eq 576
+check "dump is row-major" test "$(sed -n '2p;3p;26p' "$work/state.csv" | cut -d, -f1,2 | tr '\n' ' ')" = "0,0 0,1 1,0 "
+check "dump values are finite numbers" awk -F, 'NR > 1 { for (i = 3; i <= 8; i++) if ($i !~ /^-?[0-9.]+(e[-+][0-9]+)?$/) exit 1 }' "$work/state.csv"
+# A pinned corner has not moved and has zero velocity.
+check "pinned corner stays" test "$(sed -n 2p "$work/state.csv" | cut -d, -f6-8)" = "0,0,0"
+
+# Exactly N steps: a run of 0 steps dumps the initial state.
+expect 0 '^$' -- --headless "$scenes/hanging_sheet.toml" --steps 0 --dump "$work/initial.csv"
+check "zero steps keeps the initial velocities" awk -F, 'NR > 1 && ($6 != 0 || $7 != 0 || $8 != 0) { exit 1 }' "$work/initial.csv"
+
+# Divergence: explicit Euler on the stiff sheet without damping blows up -> status 3.
+expect 3 '^diverged at t=[0-9.]+: ' -- --headless "$scenes/stiff_sheet.toml" --steps 1000 \
+  --set solver.integrator=explicit-euler --set springs.structural.damping=0
+# The same sheet with its own (stable) settings does not.
+expect 0 '^$' -- --headless "$scenes/stiff_sheet.toml" --steps 1000
+
+# Bad input: status 2 and `error: WHERE: WHAT`, before any simulation.
+printf '[cloth]\nrows = 4\nstifness = 3\n' >"$work/typo.toml"
+expect 2 "^error: $work/typo.toml:3:1: .*stifness" -- --headless "$work/typo.toml" --steps 1
+printf '[springs.structural]\nstifness = 3\n' >"$work/typo2.toml"
+expect 2 "did you mean 'stiffness'" -- --headless "$work/typo2.toml" --steps 1
+printf '[solver]\ndt = -0.001\n' >"$work/negative_dt.toml"
+expect 2 "^error: $work/negative_dt.toml:2:6: " -- --headless "$work/negative_dt.toml" --steps 1
+expect 2 '^error: --set solver.dt: ' -- --headless "$scenes/hanging_sheet.toml" --steps 1 --set solver.dt=0
+expect 2 '^error: --set cloth.particle_mass: ' -- --headless "$scenes/hanging_sheet.toml" --steps 1 --set cloth.particle_mass=-1
+expect 2 '^error: --set cloth.rows: ' -- --headless "$scenes/hanging_sheet.toml" --steps 1 --set cloth.rows=0
+expect 2 '^error: --set cloth.rowz: .*rows' -- --headless "$scenes/hanging_sheet.toml" --steps 1 --set cloth.rowz=3
+expect 2 '^error: --set' -- --headless "$scenes/hanging_sheet.toml" --steps 1 --set nonsense
+# A grid too large for memory is refused at once, not by an out-of-memory kill.
+expect 2 '^error: --set cloth.(rows|cols): .*4194304' -- --headless "$scenes/hanging_sheet.toml" --steps 1 \
+  --set cloth.rows=100000 --set cloth.cols=100000
+expect 2 "^error: $work/missing.toml: " -- --headless "$work/missing.toml" --steps 1
+expect 2 '^error: --steps: ' -- --headless "$scenes/hanging_sheet.toml" --steps many
+expect 2 '^error: --headless: needs --steps' -- --headless "$scenes/hanging_sheet.toml"
+expect 2 '^error: --frobnicate: unknown option' -- --frobnicate
+expect 2 "^error: $work/nowhere/x.csv: cannot write" -- --headless "$scenes/hanging_sheet.toml" --steps 1 --dump "$work/nowhere/x.csv"
+expect 0 '^$' -- --help
+
+echo "$passes passed, $failures failed"
+[ "$failures" -eq 0 ]

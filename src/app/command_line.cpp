@@ -19,7 +19,8 @@ constexpr std::uint64_t max_image_side = 16384;
 
 }  // namespace
 
-std::variant<CommandLine, CommandLineError> parse_command_line(const std::vector<std::string>& args) {
+std::variant<CommandLine, CommandLineError> parse_command_line(
+    const std::vector<std::string>& args) {
     CommandLine line;
     for (std::size_t a = 0; a < args.size(); ++a) {
         const std::string& arg = args[a];
@@ -62,18 +63,19 @@ std::variant<CommandLine, CommandLineError> parse_command_line(const std::vector
             const std::string text = value.value_or("");
             const auto x = text.find('x');
             auto width = x == std::string::npos ? std::nullopt : parse_unsigned(text.substr(0, x));
-            auto height = x == std::string::npos ? std::nullopt : parse_unsigned(text.substr(x + 1));
+            auto height =
+                x == std::string::npos ? std::nullopt : parse_unsigned(text.substr(x + 1));
             if (!width || !height || *width < 1 || *height < 1 || *width > max_image_side ||
                 *height > max_image_side)
-                return CommandLineError{"--size", "expects WxH with 1 <= W, H <= 16384, got '" +
-                                                      text + "'"};
+                return CommandLineError{"--size",
+                                        "expects WxH with 1 <= W, H <= 16384, got '" + text + "'"};
             line.screenshot_width = static_cast<int>(*width);
             line.screenshot_height = static_cast<int>(*height);
         } else if (arg.rfind("-", 0) == 0 && arg.size() > 1) {
             return CommandLineError{arg, "unknown option (see weft --help)"};
         } else if (line.scene_path) {
-            return CommandLineError{arg, "only one scene file can be given (already have '" +
-                                             *line.scene_path + "')"};
+            return CommandLineError{
+                arg, "only one scene file can be given (already have '" + *line.scene_path + "')"};
         } else {
             line.scene_path = arg;
         }

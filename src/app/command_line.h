@@ -15,12 +15,12 @@ namespace weft {
 struct CommandLine {
     bool headless = false;
     bool help = false;
-    std::optional<std::string> scene_path;   // absent: the default scene
-    std::vector<std::string> overrides;      // "KEY=VALUE", in order
-    std::optional<std::uint64_t> steps;      // --steps N
-    std::optional<std::string> dump_path;    // --dump FILE.csv
+    std::optional<std::string> scene_path;  // absent: the default scene
+    std::vector<std::string> overrides;     // "KEY=VALUE", in order
+    std::optional<std::uint64_t> steps;     // --steps N
+    std::optional<std::string> dump_path;   // --dump FILE.csv
     std::optional<std::string> screenshot_path;
-    int screenshot_width = 1280;             // pixels, --size WxH
+    int screenshot_width = 1280;  // pixels, --size WxH
     int screenshot_height = 720;
 };
 
@@ -29,7 +29,8 @@ struct CommandLineError {
     std::string what;
 };
 
-std::variant<CommandLine, CommandLineError> parse_command_line(const std::vector<std::string>& args);
+std::variant<CommandLine, CommandLineError> parse_command_line(
+    const std::vector<std::string>& args);
 
 const char* usage_text();
 

@@ -43,7 +43,8 @@ void print_divergence(const Simulation& simulation, const std::string& why) {
 }  // namespace
 
 int run_headless(const CommandLine& command_line) {
-    std::optional<Scene> scene = load_checked_scene(*command_line.scene_path, command_line.overrides);
+    std::optional<Scene> scene =
+        load_checked_scene(*command_line.scene_path, command_line.overrides);
     if (!scene) return exit_bad_input;
     if (command_line.screenshot_path) {
         print_error("--screenshot", "not available yet: the rasterizer is not built");
@@ -54,7 +55,8 @@ int run_headless(const CommandLine& command_line) {
     if (command_line.dump_path) {
         dump.open(*command_line.dump_path, std::ios::binary | std::ios::trunc);
         if (!dump) {
-            print_error(*command_line.dump_path, std::string("cannot write: ") + std::strerror(errno));
+            print_error(*command_line.dump_path,
+                        std::string("cannot write: ") + std::strerror(errno));
             return exit_bad_input;
         }
     }

@@ -4,9 +4,12 @@ namespace weft {
 
 const char* spring_family_name(SpringFamily family) {
     switch (family) {
-        case SpringFamily::structural: return "structural";
-        case SpringFamily::shear: return "shear";
-        case SpringFamily::bend: return "bend";
+        case SpringFamily::structural:
+            return "structural";
+        case SpringFamily::shear:
+            return "shear";
+        case SpringFamily::bend:
+            return "bend";
     }
     return "unknown";
 }

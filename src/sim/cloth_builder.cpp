@@ -6,7 +6,9 @@
 namespace weft {
 namespace {
 
-Vec3 to_vec3(const Vec3d& v) { return {v[0], v[1], v[2]}; }
+Vec3 to_vec3(const Vec3d& v) {
+    return {v[0], v[1], v[2]};
+}
 
 // Emits springs in particle order (each particle's springs to its right and lower
 // neighbours), so consecutive springs touch nearby memory in the force pass.
@@ -48,9 +50,8 @@ Cloth build_grid_cloth(const Scene& scene) {
     for (int r = 0; r < spec.rows; ++r) {
         for (int c = 0; c < spec.cols; ++c) {
             const double across = c * spec.spacing, down = r * spec.spacing;
-            const Vec3 offset = spec.orientation == Orientation::vertical
-                                    ? Vec3(across, -down, 0.0)
-                                    : Vec3(across, 0.0, down);
+            const Vec3 offset = spec.orientation == Orientation::vertical ? Vec3(across, -down, 0.0)
+                                                                          : Vec3(across, 0.0, down);
             cloth.positions[static_cast<std::size_t>(r) * spec.cols + c] = origin + offset;
         }
     }
@@ -59,7 +60,8 @@ Cloth build_grid_cloth(const Scene& scene) {
         cloth.inverse_masses[static_cast<std::size_t>(r) * spec.cols + c] = 0.0;
     };
     switch (spec.pin_preset) {
-        case PinPreset::none: break;
+        case PinPreset::none:
+            break;
         case PinPreset::top_corners:
             pin(0, 0);
             pin(0, spec.cols - 1);

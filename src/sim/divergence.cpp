@@ -7,7 +7,9 @@
 namespace weft {
 namespace {
 
-bool is_finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool is_finite(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 std::string particle_name(const Cloth& cloth, std::size_t p) {
     std::ostringstream out;
@@ -27,7 +29,8 @@ std::optional<std::string> find_divergence(const Cloth& cloth, bool check_runawa
     if (!check_runaway_stretch) return std::nullopt;
     for (const SpringGroup& group : cloth.spring_groups) {
         for (const Spring& spring : group.springs) {
-            const double length = glm::length(cloth.positions[spring.j] - cloth.positions[spring.i]);
+            const double length =
+                glm::length(cloth.positions[spring.j] - cloth.positions[spring.i]);
             if (length > runaway_stretch_ratio * spring.rest_length) {
                 std::ostringstream out;
                 out << spring_family_name(group.family) << " spring between "

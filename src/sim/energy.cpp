@@ -15,7 +15,8 @@ Energy measure_energy(const Cloth& cloth, const ForceField& field) {
     for (const SpringGroup& group : cloth.spring_groups) {
         for (const Spring& spring : group.springs) {
             const double extension =
-                glm::length(cloth.positions[spring.j] - cloth.positions[spring.i]) - spring.rest_length;
+                glm::length(cloth.positions[spring.j] - cloth.positions[spring.i]) -
+                spring.rest_length;
             energy.elastic += 0.5 * group.stiffness * extension * extension;
         }
     }

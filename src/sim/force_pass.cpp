@@ -19,17 +19,16 @@ void accumulate_spring_forces(const SpringGroup& group, std::span<const Vec3> po
         if (length <= 0.0) continue;  // coincident ends: no direction to push along
         const Vec3 u = d / length;
         // Hooke's law plus a dashpot on the rate of change of length, (v_j - v_i) · u.
-        const double tension =
-            stiffness * (length - spring.rest_length) + damping * glm::dot(v[spring.j] - v[spring.i], u);
+        const double tension = stiffness * (length - spring.rest_length) +
+                               damping * glm::dot(v[spring.j] - v[spring.i], u);
         const Vec3 force_on_i = tension * u;
         f[spring.i] += force_on_i;
         f[spring.j] -= force_on_i;
     }
 }
 
-void accumulate_forces(const Cloth& cloth, const ForceField& field,
-                       std::span<const Vec3> positions, std::span<const Vec3> velocities,
-                       std::span<Vec3> forces) {
+void accumulate_forces(const Cloth& cloth, const ForceField& field, std::span<const Vec3> positions,
+                       std::span<const Vec3> velocities, std::span<Vec3> forces) {
     const std::size_t count = positions.size();
     const double* mass = cloth.masses.data();
     const Vec3* v = velocities.data();

@@ -25,9 +25,8 @@ struct ForceField {
 //
 // Forces on pinned particles are computed like any other; integrators ignore them through
 // the zero inverse mass. A spring of zero length has no direction and exerts no force.
-void accumulate_forces(const Cloth& cloth, const ForceField& field,
-                       std::span<const Vec3> positions, std::span<const Vec3> velocities,
-                       std::span<Vec3> forces);
+void accumulate_forces(const Cloth& cloth, const ForceField& field, std::span<const Vec3> positions,
+                       std::span<const Vec3> velocities, std::span<Vec3> forces);
 
 // Only the internal (spring) forces: the part that must conserve momentum.
 void accumulate_spring_forces(const SpringGroup& group, std::span<const Vec3> positions,

@@ -34,21 +34,21 @@ struct GridIndex {
 };
 
 struct ClothSpec {
-    int rows = 24;                                  // particles from top to bottom (>= 1)
-    int cols = 24;                                  // particles from left to right (>= 1)
-    double spacing = 0.05;                          // m, structural rest length (> 0)
-    double particle_mass = 0.01;                    // kg, every particle (> 0)
+    int rows = 24;                // particles from top to bottom (>= 1)
+    int cols = 24;                // particles from left to right (>= 1)
+    double spacing = 0.05;        // m, structural rest length (> 0)
+    double particle_mass = 0.01;  // kg, every particle (> 0)
     Layout layout = Layout::grid;
     Orientation orientation = Orientation::vertical;
-    Vec3d origin = {0.0, 0.0, 0.0};                 // m, position of particle (0, 0)
+    Vec3d origin = {0.0, 0.0, 0.0};  // m, position of particle (0, 0)
     PinPreset pin_preset = PinPreset::top_corners;
-    std::vector<GridIndex> pin_list;                // used when pin_preset == list
+    std::vector<GridIndex> pin_list;  // used when pin_preset == list
 };
 
 struct SpringFamilySpec {
-    bool enabled = false;      // structural springs are always enabled
-    double stiffness = 0.0;    // N/m
-    double damping = 0.0;      // N·s/m, along the spring
+    bool enabled = false;    // structural springs are always enabled
+    double stiffness = 0.0;  // N/m
+    double damping = 0.0;    // N·s/m, along the spring
 };
 
 struct ForcesSpec {

@@ -22,14 +22,15 @@ inline constexpr long long max_particles = 4'194'304;
 
 struct SceneError {
     std::string where;  // "FILE:LINE:COL", "FILE" (no position, e.g. unreadable), or "--set KEY"
-    std::string what;   // human-readable description, e.g. "unknown key 'stifness' (did you mean 'stiffness'?)"
+    std::string what;   // human-readable description, e.g. "unknown key 'stifness' (did you mean
+                        // 'stiffness'?)"
     std::string message() const { return "error: " + where + ": " + what; }
 };
 
 struct SceneLoadResult {
-    std::optional<Scene> scene;          // set on success
-    std::optional<SceneError> error;     // set on failure
-    std::vector<std::string> warnings;   // e.g. keys accepted but not yet modelled
+    std::optional<Scene> scene;         // set on success
+    std::optional<SceneError> error;    // set on failure
+    std::vector<std::string> warnings;  // e.g. keys accepted but not yet modelled
     bool ok() const { return scene.has_value(); }
 };
 

@@ -9,15 +9,16 @@
 namespace weft {
 namespace {
 
-Vec3 to_vec3(const Vec3d& v) { return {v[0], v[1], v[2]}; }
+Vec3 to_vec3(const Vec3d& v) {
+    return {v[0], v[1], v[2]};
+}
 
 }  // namespace
 
 std::optional<std::string> Simulation::unsupported_feature(const Scene& scene) {
     if (scene.solver.integrator == Integrator::implicit_euler)
         return "solver.integrator \"implicit-euler\" is not available yet";
-    if (scene.cloth.layout == Layout::offset)
-        return "cloth.layout \"offset\" is not available yet";
+    if (scene.cloth.layout == Layout::offset) return "cloth.layout \"offset\" is not available yet";
     return std::nullopt;
 }
 

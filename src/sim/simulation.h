@@ -20,7 +20,7 @@ struct StepReport {
 };
 
 class Simulation {
-public:
+  public:
     // The scene must be validated (the loader does that). Throws std::invalid_argument for a
     // valid scene that asks for something not modelled yet (see unsupported_feature).
     explicit Simulation(const Scene& scene);
@@ -48,7 +48,7 @@ public:
     // carry history (the Verlets) restart from the edited state.
     Cloth& edit_cloth();
 
-private:
+  private:
     Scene scene_;
     Cloth cloth_;
     ForceField field_;

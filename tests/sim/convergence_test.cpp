@@ -42,8 +42,8 @@ Errors errors_against_closed_form(const HangingSpring& spring, Integrator integr
         const double t = sample * 0.02;
         worst.position = std::max(worst.position,
                                   std::abs(simulation.cloth().positions[1].y - spring.position(t)));
-        worst.velocity = std::max(worst.velocity,
-                                  std::abs(simulation.cloth().velocities[1].y - spring.velocity(t)));
+        worst.velocity = std::max(
+            worst.velocity, std::abs(simulation.cloth().velocities[1].y - spring.velocity(t)));
     }
     return worst;
 }
@@ -51,16 +51,18 @@ Errors errors_against_closed_form(const HangingSpring& spring, Integrator integr
 // Observed order from the last two halvings of a ladder of errors, averaged.
 double observed_order(const std::vector<double>& errors) {
     const std::size_t n = errors.size();
-    return 0.5 * (std::log2(errors[n - 3] / errors[n - 2]) + std::log2(errors[n - 2] / errors[n - 1]));
+    return 0.5 *
+           (std::log2(errors[n - 3] / errors[n - 2]) + std::log2(errors[n - 2] / errors[n - 1]));
 }
 
 class ConvergenceOrder : public ::testing::TestWithParam<OrderCase> {
-protected:
+  protected:
     void expect_order(const HangingSpring& spring) {
         const OrderCase c = GetParam();
         std::vector<double> position_errors, velocity_errors;
         for (int halving = 0; halving < 4; ++halving) {
-            const Errors e = errors_against_closed_form(spring, c.integrator, c.coarsest_dt / (1 << halving));
+            const Errors e =
+                errors_against_closed_form(spring, c.integrator, c.coarsest_dt / (1 << halving));
             position_errors.push_back(e.position);
             velocity_errors.push_back(e.velocity);
         }
@@ -83,7 +85,9 @@ HangingSpring moving_spring() {
     return spring;
 }
 
-TEST_P(ConvergenceOrder, Undamped) { expect_order(moving_spring()); }
+TEST_P(ConvergenceOrder, Undamped) {
+    expect_order(moving_spring());
+}
 
 TEST_P(ConvergenceOrder, WithSpringDampingAndDrag) {
     HangingSpring spring = moving_spring();
@@ -92,14 +96,13 @@ TEST_P(ConvergenceOrder, WithSpringDampingAndDrag) {
     expect_order(spring);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    AllIntegrators, ConvergenceOrder,
-    ::testing::Values(OrderCase{Integrator::explicit_euler, 1e-3, 1.0},
-                      OrderCase{Integrator::symplectic_euler, 1e-3, 1.0},
-                      OrderCase{Integrator::verlet, 4e-3, 2.0},
-                      OrderCase{Integrator::velocity_verlet, 4e-3, 2.0},
-                      OrderCase{Integrator::rk4, 2e-2, 4.0}),
-    [](const auto& info) { return testing::integrator_test_name(info.param.integrator); });
+INSTANTIATE_TEST_SUITE_P(AllIntegrators, ConvergenceOrder,
+                         ::testing::Values(OrderCase{Integrator::explicit_euler, 1e-3, 1.0},
+                                           OrderCase{Integrator::symplectic_euler, 1e-3, 1.0},
+                                           OrderCase{Integrator::verlet, 4e-3, 2.0},
+                                           OrderCase{Integrator::velocity_verlet, 4e-3, 2.0},
+                                           OrderCase{Integrator::rk4, 2e-2, 4.0}),
+                         testing::IntegratorParamName());
 
 // The same orders on a whole damped sheet with all three spring families, moving in 3-D
 // under gravity and wind, against an RK4 reference at a far smaller step.
@@ -123,7 +126,8 @@ Scene small_sheet(Integrator integrator, double dt) {
 double sheet_error(const Simulation& run, const Simulation& reference) {
     double worst = 0.0;
     for (std::size_t p = 0; p < run.cloth().particle_count(); ++p)
-        worst = std::max(worst, glm::length(run.cloth().positions[p] - reference.cloth().positions[p]));
+        worst =
+            std::max(worst, glm::length(run.cloth().positions[p] - reference.cloth().positions[p]));
     return worst;
 }
 
@@ -143,14 +147,13 @@ TEST_P(SheetConvergenceOrder, AllSpringFamiliesDamped) {
         << integrator_name(c.integrator) << " errors " << errors[0] << " ... " << errors[3];
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    AllIntegrators, SheetConvergenceOrder,
-    ::testing::Values(OrderCase{Integrator::explicit_euler, 2e-4, 1.0},
-                      OrderCase{Integrator::symplectic_euler, 2e-4, 1.0},
-                      OrderCase{Integrator::verlet, 1e-3, 2.0},
-                      OrderCase{Integrator::velocity_verlet, 1e-3, 2.0},
-                      OrderCase{Integrator::rk4, 4e-3, 4.0}),
-    [](const auto& info) { return testing::integrator_test_name(info.param.integrator); });
+INSTANTIATE_TEST_SUITE_P(AllIntegrators, SheetConvergenceOrder,
+                         ::testing::Values(OrderCase{Integrator::explicit_euler, 2e-4, 1.0},
+                                           OrderCase{Integrator::symplectic_euler, 2e-4, 1.0},
+                                           OrderCase{Integrator::verlet, 1e-3, 2.0},
+                                           OrderCase{Integrator::velocity_verlet, 1e-3, 2.0},
+                                           OrderCase{Integrator::rk4, 4e-3, 4.0}),
+                         testing::IntegratorParamName());
 
 }  // namespace
 }  // namespace weft

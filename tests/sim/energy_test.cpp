@@ -21,7 +21,8 @@ struct OscillatorState {
 };
 
 OscillatorState oscillator_state(const Simulation& simulation, const HangingSpring& spring) {
-    return {simulation.cloth().positions[1].y - spring.equilibrium(), simulation.cloth().velocities[1].y};
+    return {simulation.cloth().positions[1].y - spring.equilibrium(),
+            simulation.cloth().velocities[1].y};
 }
 
 TEST(ExplicitEuler, EnergyGrowsByExactlyOnePlusHOmegaSquaredPerStep) {
@@ -36,14 +37,16 @@ TEST(ExplicitEuler, EnergyGrowsByExactlyOnePlusHOmegaSquaredPerStep) {
     };
     const double initial = oscillation_energy();
     // The total energy the code measures is the oscillation energy plus a constant.
-    const double offset = measure_energy(simulation.cloth(), simulation.force_field()).total() - initial;
+    const double offset =
+        measure_energy(simulation.cloth(), simulation.force_field()).total() - initial;
     const double growth_per_step = 1.0 + dt * dt * spring.omega0() * spring.omega0();
     const long long steps = 100'000;
     ASSERT_TRUE(testing::run_steps(simulation, steps));
     const double expected = initial * std::pow(growth_per_step, static_cast<double>(steps));
     EXPECT_NEAR(oscillation_energy() / expected, 1.0, 1e-9);
     EXPECT_GT(expected / initial, 10.0);  // e^{10⁵ · 2.5·10⁻⁵} ≈ 12: it really grew
-    const double measured_total = measure_energy(simulation.cloth(), simulation.force_field()).total();
+    const double measured_total =
+        measure_energy(simulation.cloth(), simulation.force_field()).total();
     EXPECT_NEAR((measured_total - offset) / expected, 1.0, 1e-9);
 }
 
@@ -59,7 +62,8 @@ TEST(SymplecticEuler, ConservesItsModifiedEnergyExactly) {
     const double initial = modified_energy();
     for (int block = 0; block < 100; ++block) {
         ASSERT_TRUE(testing::run_steps(simulation, 1000));
-        ASSERT_NEAR(modified_energy() / initial, 1.0, 1e-9) << "after " << (block + 1) * 1000 << " steps";
+        ASSERT_NEAR(modified_energy() / initial, 1.0, 1e-9)
+            << "after " << (block + 1) * 1000 << " steps";
     }
 }
 
@@ -76,9 +80,9 @@ Scene undamped_sheet(Integrator integrator) {
 }
 
 struct EnergyDrift {
-    double early;       // J, largest |E - E0| over the first tenth of the run
-    double late;        // J, same over the last tenth
-    double scale;       // J, largest kinetic energy seen: the energy that moves around
+    double early;  // J, largest |E - E0| over the first tenth of the run
+    double late;   // J, same over the last tenth
+    double scale;  // J, largest kinetic energy seen: the energy that moves around
     bool finite = true;
 };
 
@@ -101,7 +105,8 @@ EnergyDrift energy_drift(Integrator integrator, long long steps) {
 }
 
 TEST(SymplecticMethods, EnergyErrorStaysBoundedOverOneHundredThousandUndampedSteps) {
-    for (Integrator integrator : {Integrator::symplectic_euler, Integrator::verlet, Integrator::velocity_verlet}) {
+    for (Integrator integrator :
+         {Integrator::symplectic_euler, Integrator::verlet, Integrator::velocity_verlet}) {
         const EnergyDrift drift = energy_drift(integrator, 100'000);
         ASSERT_TRUE(drift.finite) << integrator_name(integrator);
         // Bounded: no growth from the start of the run to its end...

@@ -60,19 +60,22 @@ TEST(ForcePass, MatchesTheDesignFormulaSpringBySpring) {
     // Independent evaluation: f = (k (|d| - L) + c ((v_j - v_i)·u)) u on i, -f on j.
     std::vector<Vec3> expected(cloth.particle_count());
     for (std::size_t p = 0; p < cloth.particle_count(); ++p)
-        expected[p] = cloth.masses[p] * field.gravity - field.air_drag * (cloth.velocities[p] - field.wind);
+        expected[p] =
+            cloth.masses[p] * field.gravity - field.air_drag * (cloth.velocities[p] - field.wind);
     for (const SpringGroup& group : cloth.spring_groups) {
         for (const Spring& s : group.springs) {
             const Vec3 d = cloth.positions[s.j] - cloth.positions[s.i];
             const Vec3 u = glm::normalize(d);
-            const double magnitude = group.stiffness * (glm::length(d) - s.rest_length) +
-                                     group.damping * glm::dot(cloth.velocities[s.j] - cloth.velocities[s.i], u);
+            const double magnitude =
+                group.stiffness * (glm::length(d) - s.rest_length) +
+                group.damping * glm::dot(cloth.velocities[s.j] - cloth.velocities[s.i], u);
             expected[s.i] += magnitude * u;
             expected[s.j] -= magnitude * u;
         }
     }
     for (std::size_t p = 0; p < cloth.particle_count(); ++p)
-        EXPECT_LT(glm::length(forces[p] - expected[p]), 1e-12 * (1.0 + glm::length(expected[p]))) << p;
+        EXPECT_LT(glm::length(forces[p] - expected[p]), 1e-12 * (1.0 + glm::length(expected[p])))
+            << p;
 }
 
 TEST(ForcePass, StretchedSpringPullsItsEndsTogether) {
@@ -87,7 +90,7 @@ TEST(ForcePass, StretchedSpringPullsItsEndsTogether) {
     no_external.gravity = Vec3(0.0);
     std::vector<Vec3> forces(2);
     accumulate_forces(cloth, no_external, cloth.positions, cloth.velocities, forces);
-    EXPECT_EQ(forces[0], Vec3(5.0, 0.0, 0.0));   // towards particle 1: k · 0.5 m = 5 N
+    EXPECT_EQ(forces[0], Vec3(5.0, 0.0, 0.0));  // towards particle 1: k · 0.5 m = 5 N
     EXPECT_EQ(forces[1], Vec3(-5.0, 0.0, 0.0));
 }
 

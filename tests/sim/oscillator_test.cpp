@@ -11,7 +11,7 @@ using testing::HangingSpring;
 
 struct OscillatorCase {
     Integrator integrator;
-    double dt;         // s, small enough for this method's order to reach the tolerance
+    double dt;  // s, small enough for this method's order to reach the tolerance
 };
 
 void PrintTo(const OscillatorCase& c, std::ostream* out) {
@@ -42,7 +42,7 @@ TEST_P(HangingSpringMatchesClosedForm, OverThreeUndampedPeriods) {
 
 TEST_P(HangingSpringMatchesClosedForm, WithSpringDampingAndDrag) {
     HangingSpring spring;
-    spring.damping = 0.4;   // γ = (0.4 + 0.2) / 0.2 = 3 /s: visibly decaying
+    spring.damping = 0.4;  // γ = (0.4 + 0.2) / 0.2 = 3 /s: visibly decaying
     spring.air_drag = 0.2;
     const OscillatorCase c = GetParam();
     Simulation simulation(spring.scene(c.integrator, c.dt));
@@ -57,14 +57,13 @@ TEST_P(HangingSpringMatchesClosedForm, WithSpringDampingAndDrag) {
     EXPECT_LT(worst, 1e-3 * amplitude) << integrator_name(c.integrator);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    AllIntegrators, HangingSpringMatchesClosedForm,
-    ::testing::Values(OscillatorCase{Integrator::explicit_euler, 1e-6},
-                      OscillatorCase{Integrator::symplectic_euler, 1e-5},
-                      OscillatorCase{Integrator::verlet, 1e-3},
-                      OscillatorCase{Integrator::velocity_verlet, 1e-3},
-                      OscillatorCase{Integrator::rk4, 1e-2}),
-    [](const auto& info) { return testing::integrator_test_name(info.param.integrator); });
+INSTANTIATE_TEST_SUITE_P(AllIntegrators, HangingSpringMatchesClosedForm,
+                         ::testing::Values(OscillatorCase{Integrator::explicit_euler, 1e-6},
+                                           OscillatorCase{Integrator::symplectic_euler, 1e-5},
+                                           OscillatorCase{Integrator::verlet, 1e-3},
+                                           OscillatorCase{Integrator::velocity_verlet, 1e-3},
+                                           OscillatorCase{Integrator::rk4, 1e-2}),
+                         testing::IntegratorParamName());
 
 TEST(Simulation, PinnedParticlesNeverMoveUnderAnyIntegrator) {
     for (Integrator integrator : testing::all_integrators) {
@@ -84,7 +83,8 @@ TEST(Simulation, PinnedParticlesNeverMoveUnderAnyIntegrator) {
             EXPECT_EQ(simulation.cloth().velocities[p], Vec3(0.0));
         }
         // ...while the free ones did move in the wind.
-        EXPECT_GT(std::abs(simulation.cloth().positions.back().z - initial.positions.back().z), 0.01);
+        EXPECT_GT(std::abs(simulation.cloth().positions.back().z - initial.positions.back().z),
+                  0.01);
     }
 }
 

@@ -45,8 +45,9 @@ TEST(Tearing, AHeavyPullTearsTheSheetInsteadOfDiverging) {
     EXPECT_EQ(simulation.cloth().spring_count(), initial - torn);
     // What is left is within the limit.
     for (const Spring& s : simulation.cloth().spring_groups[0].springs)
-        EXPECT_LE(glm::length(simulation.cloth().positions[s.j] - simulation.cloth().positions[s.i]),
-                  1.5 * s.rest_length);
+        EXPECT_LE(
+            glm::length(simulation.cloth().positions[s.j] - simulation.cloth().positions[s.i]),
+            1.5 * s.rest_length);
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 // Small scenes and exact solutions shared by the simulation tests.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <string>
 
@@ -9,19 +11,19 @@
 
 namespace weft::testing {
 
-inline constexpr Integrator all_integrators[] = {
-    Integrator::explicit_euler, Integrator::symplectic_euler, Integrator::verlet,
-    Integrator::velocity_verlet, Integrator::rk4};
+inline constexpr Integrator all_integrators[] = {Integrator::explicit_euler,
+                                                 Integrator::symplectic_euler, Integrator::verlet,
+                                                 Integrator::velocity_verlet, Integrator::rk4};
 
 // One particle of mass m hanging from a pinned one by a single spring (rows = 2, cols = 1),
 // released at the spring's rest length, so it oscillates vertically about its equilibrium.
 struct HangingSpring {
-    double mass = 0.1;          // kg
-    double stiffness = 40.0;    // N/m      -> ω0 = 20 rad/s
-    double damping = 0.0;       // N·s/m, spring dashpot
-    double air_drag = 0.0;      // N·s/m
-    double rest_length = 0.1;   // m
-    double gravity = 9.81;      // m/s², downwards
+    double mass = 0.1;         // kg
+    double stiffness = 40.0;   // N/m      -> ω0 = 20 rad/s
+    double damping = 0.0;      // N·s/m, spring dashpot
+    double air_drag = 0.0;     // N·s/m
+    double rest_length = 0.1;  // m
+    double gravity = 9.81;     // m/s², downwards
 
     Scene scene(Integrator integrator, double dt) const {
         Scene s;
@@ -57,14 +59,18 @@ struct HangingSpring {
     double omega0() const { return std::sqrt(stiffness / mass); }
     double omega_d() const { return std::sqrt(omega0() * omega0() - gamma() * gamma()); }
     double cosine_amplitude() const { return mass * gravity / stiffness; }
-    double sine_amplitude() const { return (initial_velocity + gamma() * cosine_amplitude()) / omega_d(); }
+    double sine_amplitude() const {
+        return (initial_velocity + gamma() * cosine_amplitude()) / omega_d();
+    }
     double position(double t) const {
         const double wd = omega_d(), a = cosine_amplitude(), b = sine_amplitude();
-        return equilibrium() + std::exp(-gamma() * t) * (a * std::cos(wd * t) + b * std::sin(wd * t));
+        return equilibrium() +
+               std::exp(-gamma() * t) * (a * std::cos(wd * t) + b * std::sin(wd * t));
     }
     double velocity(double t) const {
         const double wd = omega_d(), g = gamma(), a = cosine_amplitude(), b = sine_amplitude();
-        return std::exp(-g * t) * ((b * wd - g * a) * std::cos(wd * t) - (a * wd + g * b) * std::sin(wd * t));
+        return std::exp(-g * t) *
+               ((b * wd - g * a) * std::cos(wd * t) - (a * wd + g * b) * std::sin(wd * t));
     }
 };
 
@@ -74,6 +80,14 @@ inline std::string integrator_test_name(Integrator integrator) {
     std::erase(name, '-');
     return name;
 }
+
+// Names parameterised tests after the integrator of their parameter.
+struct IntegratorParamName {
+    template <class Param>
+    std::string operator()(const ::testing::TestParamInfo<Param>& param_info) const {
+        return integrator_test_name(param_info.param.integrator);
+    }
+};
 
 // Runs `steps` steps; fails the calling test (returns false) on divergence.
 inline bool run_steps(Simulation& simulation, long long steps) {

@@ -6,7 +6,8 @@
 
 namespace weft {
 
-void step_explicit_euler(Cloth& cloth, const ForceField& field, double dt, IntegratorWorkspace& work) {
+void step_explicit_euler(Cloth& cloth, const ForceField& field, double dt,
+                         IntegratorWorkspace& work) {
     evaluate_forces(cloth, field, cloth.positions, cloth.velocities, work);
     const std::size_t count = cloth.particle_count();
     Vec3* x = cloth.positions.data();

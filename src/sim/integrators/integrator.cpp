@@ -17,12 +17,18 @@ void evaluate_forces(const Cloth& cloth, const ForceField& field, std::span<cons
 
 StepFunction step_function(Integrator integrator) {
     switch (integrator) {
-        case Integrator::explicit_euler: return step_explicit_euler;
-        case Integrator::symplectic_euler: return step_symplectic_euler;
-        case Integrator::verlet: return step_verlet;
-        case Integrator::velocity_verlet: return step_velocity_verlet;
-        case Integrator::rk4: return step_rk4;
-        case Integrator::implicit_euler: return nullptr;
+        case Integrator::explicit_euler:
+            return step_explicit_euler;
+        case Integrator::symplectic_euler:
+            return step_symplectic_euler;
+        case Integrator::verlet:
+            return step_verlet;
+        case Integrator::velocity_verlet:
+            return step_velocity_verlet;
+        case Integrator::rk4:
+            return step_rk4;
+        case Integrator::implicit_euler:
+            return nullptr;
     }
     return nullptr;
 }

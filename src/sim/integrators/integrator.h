@@ -39,10 +39,13 @@ void evaluate_forces(const Cloth& cloth, const ForceField& field, std::span<cons
 using StepFunction = void (*)(Cloth& cloth, const ForceField& field, double dt,
                               IntegratorWorkspace& work);
 
-void step_explicit_euler(Cloth& cloth, const ForceField& field, double dt, IntegratorWorkspace& work);
-void step_symplectic_euler(Cloth& cloth, const ForceField& field, double dt, IntegratorWorkspace& work);
+void step_explicit_euler(Cloth& cloth, const ForceField& field, double dt,
+                         IntegratorWorkspace& work);
+void step_symplectic_euler(Cloth& cloth, const ForceField& field, double dt,
+                           IntegratorWorkspace& work);
 void step_verlet(Cloth& cloth, const ForceField& field, double dt, IntegratorWorkspace& work);
-void step_velocity_verlet(Cloth& cloth, const ForceField& field, double dt, IntegratorWorkspace& work);
+void step_velocity_verlet(Cloth& cloth, const ForceField& field, double dt,
+                          IntegratorWorkspace& work);
 void step_rk4(Cloth& cloth, const ForceField& field, double dt, IntegratorWorkspace& work);
 
 // The step function of a method; nullptr for one not implemented (implicit Euler).

@@ -1,0 +1,338 @@
+// Scene loading (scene_loader.h): the keys of the design notes' scene format, read from a
+// TOML document with TomlReader, after the --set overrides have been written into it.
+//
+// Overrides go into the document before anything is checked, so a value from --set passes
+// exactly the checks a value from the file does; TomlReader reports it as "--set KEY".
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "sim/scene_loader.h"
+#include "sim/toml_reader.h"
+
+namespace weft {
+
+const char* integrator_name(Integrator integrator) {
+    switch (integrator) {
+        case Integrator::explicit_euler:
+            return "explicit-euler";
+        case Integrator::symplectic_euler:
+            return "symplectic-euler";
+        case Integrator::verlet:
+            return "verlet";
+        case Integrator::velocity_verlet:
+            return "velocity-verlet";
+        case Integrator::rk4:
+            return "rk4";
+        case Integrator::implicit_euler:
+            return "implicit-euler";
+    }
+    return "unknown";
+}
+
+namespace {
+
+// Reads a table of a spring family. For shear and bend, the table being there means the
+// family is wanted unless it says `enabled = false`.
+void read_spring_family(TomlReader& reader, const toml::table& springs, std::string_view family,
+                        SpringFamilySpec& spec) {
+    const std::string path = TomlReader::join("springs", family);
+    const toml::table* table = reader.sub_table(springs, "springs", family);
+    if (!table) return;
+    reader.check_keys(*table, path, {"enabled", "stiffness", "damping"});
+    spec.enabled = true;
+    reader.read_bool(*table, path, "enabled", spec.enabled);
+    reader.read_number(*table, path, "stiffness", spec.stiffness, 0.0);
+    reader.read_number(*table, path, "damping", spec.damping, 0.0);
+}
+
+void read_pins(TomlReader& reader, const toml::table& cloth, ClothSpec& spec) {
+    const toml::node* node = cloth.get("pins");
+    if (!node || reader.failed()) return;
+    if (node->is_string()) {
+        int preset = 0;
+        if (reader.read_choice(cloth, "cloth", "pins", {"none", "top-corners", "top-row"}, preset))
+            spec.pin_preset = static_cast<PinPreset>(preset);
+        return;
+    }
+    const auto* list = node->as_array();
+    if (!list) {
+        reader.fail(*node, "cloth.pins",
+                    "cloth.pins must be \"none\", \"top-corners\", \"top-row\" or a list of "
+                    "[row, col], got " +
+                        describe_type(*node));
+        return;
+    }
+    spec.pin_preset = PinPreset::list;
+    spec.pin_list.clear();
+    for (const toml::node& entry : *list) {
+        const auto* pair = entry.as_array();
+        const bool is_pair =
+            pair && pair->size() == 2 && pair->get(0)->is_integer() && pair->get(1)->is_integer();
+        if (!is_pair) {
+            reader.fail(entry, "cloth.pins", "each pin must be [row, col] with two integers");
+            return;
+        }
+        const std::int64_t row = pair->get(0)->as_integer()->get();
+        const std::int64_t col = pair->get(1)->as_integer()->get();
+        if (row < 0 || row >= spec.rows || col < 0 || col >= spec.cols) {
+            reader.fail(entry, "cloth.pins",
+                        "pin [" + std::to_string(row) + ", " + std::to_string(col) +
+                            "] is outside the " + std::to_string(spec.rows) + "×" +
+                            std::to_string(spec.cols) + " grid");
+            return;
+        }
+        spec.pin_list.push_back({static_cast<int>(row), static_cast<int>(col)});
+    }
+}
+
+void read_cloth(TomlReader& reader, const toml::table& root, Scene& scene) {
+    const toml::table* cloth = reader.sub_table(root, "", "cloth");
+    if (!cloth) return;
+    ClothSpec& spec = scene.cloth;
+    reader.check_keys(
+        *cloth, "cloth",
+        {"rows", "cols", "spacing", "particle_mass", "layout", "orientation", "origin", "pins"});
+    std::int64_t rows = spec.rows, cols = spec.cols;
+    reader.read_int(*cloth, "cloth", "rows", 1, max_particles, rows);
+    reader.read_int(*cloth, "cloth", "cols", 1, max_particles, cols);
+    if (!reader.failed() && rows * cols > max_particles) {
+        // Blame the key the scene set (the larger one if it set both).
+        const char* key =
+            cloth->get("rows") && (rows >= cols || !cloth->get("cols")) ? "rows" : "cols";
+        reader.fail(*cloth->get(key), std::string("cloth.") + key,
+                    "cloth.rows × cloth.cols = " + std::to_string(rows * cols) +
+                        " particles, more than the limit of " + std::to_string(max_particles));
+    }
+    spec.rows = static_cast<int>(rows);
+    spec.cols = static_cast<int>(cols);
+    reader.read_number(*cloth, "cloth", "spacing", spec.spacing, 0.0, true);
+    reader.read_number(*cloth, "cloth", "particle_mass", spec.particle_mass, 0.0, true);
+    int layout = static_cast<int>(spec.layout), orientation = static_cast<int>(spec.orientation);
+    reader.read_choice(*cloth, "cloth", "layout", {"grid", "offset"}, layout);
+    reader.read_choice(*cloth, "cloth", "orientation", {"vertical", "horizontal"}, orientation);
+    spec.layout = static_cast<Layout>(layout);
+    spec.orientation = static_cast<Orientation>(orientation);
+    reader.read_vec3(*cloth, "cloth", "origin", spec.origin);
+    read_pins(reader, *cloth, spec);
+}
+
+void read_springs(TomlReader& reader, const toml::table& root, Scene& scene) {
+    const toml::table* springs = reader.sub_table(root, "", "springs");
+    if (!springs) return;
+    reader.check_keys(*springs, "springs", {"structural", "shear", "bend"});
+    read_spring_family(reader, *springs, "structural", scene.structural);
+    read_spring_family(reader, *springs, "shear", scene.shear);
+    read_spring_family(reader, *springs, "bend", scene.bend);
+    if (!reader.failed() && !scene.structural.enabled) {
+        const toml::node& node = *springs->get("structural")->as_table()->get("enabled");
+        reader.fail(node, "springs.structural.enabled", "structural springs cannot be disabled");
+    }
+}
+
+// An optional single-key table such as [tearing]: absent means the feature is off; present
+// means on, with the key's value or its default.
+void read_optional_feature(TomlReader& reader, const toml::table& root, std::string_view table_name,
+                           std::string_view key, double default_value, double minimum,
+                           std::optional<double>& out) {
+    const toml::table* table = reader.sub_table(root, "", table_name);
+    if (!table) return;
+    const std::string path(table_name);
+    reader.check_keys(*table, path, {key});
+    double value = default_value;
+    reader.read_number(*table, path, key, value, minimum, true);
+    out = value;
+}
+
+void read_forces_and_solver(TomlReader& reader, const toml::table& root, Scene& scene) {
+    if (const toml::table* forces = reader.sub_table(root, "", "forces")) {
+        reader.check_keys(*forces, "forces", {"gravity", "air_drag", "wind"});
+        reader.read_vec3(*forces, "forces", "gravity", scene.forces.gravity);
+        reader.read_number(*forces, "forces", "air_drag", scene.forces.air_drag, 0.0);
+        reader.read_vec3(*forces, "forces", "wind", scene.forces.wind);
+    }
+    if (const toml::table* solver = reader.sub_table(root, "", "solver")) {
+        reader.check_keys(*solver, "solver", {"integrator", "dt"});
+        int integrator = static_cast<int>(scene.solver.integrator);
+        reader.read_choice(*solver, "solver", "integrator",
+                           {"explicit-euler", "symplectic-euler", "verlet", "velocity-verlet",
+                            "rk4", "implicit-euler"},
+                           integrator);
+        scene.solver.integrator = static_cast<Integrator>(integrator);
+        reader.read_number(*solver, "solver", "dt", scene.solver.dt, 0.0, true);
+    }
+}
+
+void read_colliders(TomlReader& reader, const toml::table& root, Scene& scene) {
+    const toml::node* node = root.get("colliders");
+    if (!node || reader.failed()) return;
+    const auto* list = node->as_array();
+    if (!list) {
+        reader.fail(*node, "colliders", "colliders must be an array of tables ([[colliders]])");
+        return;
+    }
+    for (const toml::node& entry : *list) {
+        const auto* table = entry.as_table();
+        if (!table) {
+            reader.fail(entry, "colliders", "each collider must be a table");
+            return;
+        }
+        ColliderSpec collider;
+        reader.check_keys(
+            *table, "colliders",
+            {"type", "center", "radius", "point", "normal", "response", "restitution", "friction"});
+        int type = 0, response = 0;
+        reader.read_choice(*table, "colliders", "type", {"sphere", "plane"}, type);
+        reader.read_vec3(*table, "colliders", "center", collider.center);
+        reader.read_number(*table, "colliders", "radius", collider.radius, 0.0, true);
+        reader.read_vec3(*table, "colliders", "point", collider.point);
+        reader.read_vec3(*table, "colliders", "normal", collider.normal);
+        reader.read_choice(*table, "colliders", "response", {"impulse", "repulsion"}, response);
+        reader.read_number(*table, "colliders", "restitution", collider.restitution, 0.0, false,
+                           1.0);
+        reader.read_number(*table, "colliders", "friction", collider.friction, 0.0);
+        collider.type = static_cast<ColliderType>(type);
+        collider.response = static_cast<ContactResponse>(response);
+        const double length = std::sqrt(collider.normal[0] * collider.normal[0] +
+                                        collider.normal[1] * collider.normal[1] +
+                                        collider.normal[2] * collider.normal[2]);
+        if (!reader.failed() && !(length > 0.0)) {
+            reader.fail(*table->get("normal"), "colliders.normal",
+                        "colliders.normal must not be zero");
+            return;
+        }
+        for (double& component : collider.normal) component /= length;
+        scene.colliders.push_back(collider);
+    }
+}
+
+void read_camera(TomlReader& reader, const toml::table& root, Scene& scene) {
+    const toml::table* camera = reader.sub_table(root, "", "camera");
+    if (!camera) return;
+    reader.check_keys(*camera, "camera", {"position", "target", "fov_degrees"});
+    reader.read_vec3(*camera, "camera", "position", scene.camera.position);
+    reader.read_vec3(*camera, "camera", "target", scene.camera.target);
+    reader.read_number(*camera, "camera", "fov_degrees", scene.camera.fov_degrees, 0.0, true,
+                       179.0);
+}
+
+// Writes one "KEY=VALUE" override into the document. A VALUE that is not TOML (a bare word
+// such as rk4 or explicit-euler) is taken as a string.
+std::optional<SceneError> apply_override(toml::table& root, const std::string& override_text,
+                                         std::set<std::string>& overridden) {
+    const auto equals = override_text.find('=');
+    const std::string key = override_text.substr(0, equals);
+    const std::string where = "--set " + key;
+    if (equals == std::string::npos) return SceneError{where, "expects KEY=VALUE"};
+    const bool key_well_formed =
+        !key.empty() && key.front() != '.' && key.back() != '.' &&
+        key.find("..") == std::string::npos &&
+        key.find_first_not_of(
+            "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.-") ==
+            std::string::npos;
+    if (!key_well_formed) return SceneError{where, "expects a dotted key such as solver.dt"};
+    const std::string value_text = override_text.substr(equals + 1);
+
+    toml::table snippet;
+    try {
+        snippet = toml::parse("value = " + value_text);
+    } catch (const toml::parse_error&) {
+        snippet = toml::table{};
+        snippet.insert_or_assign("value", value_text);
+    }
+    const toml::node* value = snippet.get("value");
+    if (value_text.empty() || !value) return SceneError{where, "has no value"};
+
+    toml::table* table = &root;
+    std::string path;
+    for (std::size_t start = 0;;) {
+        const auto dot = key.find('.', start);
+        const std::string segment = key.substr(start, dot == std::string::npos ? dot : dot - start);
+        if (dot == std::string::npos) {
+            value->visit([&](const auto& concrete) { table->insert_or_assign(segment, concrete); });
+            overridden.insert(key);
+            return std::nullopt;
+        }
+        path = TomlReader::join(path, segment);
+        toml::node* next = table->get(segment);
+        if (!next) next = &table->insert_or_assign(segment, toml::table{}).first->second;
+        table = next->as_table();
+        if (!table)
+            return SceneError{where,
+                              path + " is " + describe_type(*next) + ", not a table of keys"};
+        start = dot + 1;
+    }
+}
+
+}  // namespace
+
+SceneLoadResult load_scene_text(std::string_view toml_text, std::string_view source_name,
+                                const std::vector<std::string>& overrides) {
+    SceneLoadResult result;
+    const std::string source(source_name);
+    toml::table root;
+    try {
+        root = toml::parse(toml_text, source);
+    } catch (const toml::parse_error& error) {
+        const auto& begin = error.source().begin;
+        result.error = SceneError{
+            source + ":" + std::to_string(begin.line) + ":" + std::to_string(begin.column),
+            std::string(error.description())};
+        return result;
+    }
+    std::set<std::string> overridden;
+    for (const std::string& override_text : overrides) {
+        if (auto error = apply_override(root, override_text, overridden)) {
+            result.error = error;
+            return result;
+        }
+    }
+
+    TomlReader reader(source, overridden);
+    Scene scene;
+    reader.check_keys(root, "",
+                      {"name", "cloth", "springs", "tearing", "strain_limit", "self_collision",
+                       "forces", "solver", "colliders", "camera"});
+    reader.read_string(root, "", "name", scene.name);
+    read_cloth(reader, root, scene);
+    read_springs(reader, root, scene);
+    read_optional_feature(reader, root, "tearing", "max_stretch", 1.6, 1.0, scene.tear_max_stretch);
+    read_optional_feature(reader, root, "strain_limit", "max_stretch", 0.1, 0.0,
+                          scene.strain_limit_max_stretch);
+    read_optional_feature(reader, root, "self_collision", "thickness", 0.01, 0.0,
+                          scene.self_collision_thickness);
+    read_forces_and_solver(reader, root, scene);
+    read_colliders(reader, root, scene);
+    read_camera(reader, root, scene);
+    if (reader.failed()) {
+        result.error = reader.error();
+        return result;
+    }
+
+    // Accepted by the format, not modelled yet: say so rather than ignore them silently.
+    if (scene.strain_limit_max_stretch)
+        result.warnings.push_back(source + ": [strain_limit] is not modelled yet and is ignored");
+    if (scene.self_collision_thickness)
+        result.warnings.push_back(source + ": [self_collision] is not modelled yet and is ignored");
+    if (!scene.colliders.empty())
+        result.warnings.push_back(source + ": [[colliders]] are not modelled yet and are ignored");
+    result.scene = std::move(scene);
+    return result;
+}
+
+SceneLoadResult load_scene_file(const std::string& path,
+                                const std::vector<std::string>& overrides) {
+    std::ifstream file(path, std::ios::binary);
+    if (!file) {
+        SceneLoadResult result;
+        result.error = SceneError{path, std::string("cannot read file: ") + std::strerror(errno)};
+        return result;
+    }
+    std::ostringstream text;
+    text << file.rdbuf();
+    return load_scene_text(text.str(), path, overrides);
+}
+
+}  // namespace weft

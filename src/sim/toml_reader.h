@@ -1,0 +1,75 @@
+// TomlReader: typed, checked reads from a parsed TOML document, with errors that name where
+// the offending value came from — "FILE:LINE:COL" for the file, "--set KEY" for a value an
+// override put there. The first error wins; every read after it is a no-op that returns
+// false, so the scene loader can read straight through without checking each call.
+#pragma once
+
+#include <toml++/toml.h>
+#include <cstdint>
+#include <initializer_list>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+
+#include "sim/scene.h"
+#include "sim/scene_loader.h"
+
+namespace weft {
+
+// The allowed key nearest to `key` by edit distance, if it is close enough to be a typo.
+std::optional<std::string> nearest_key(std::string_view key,
+                                       std::initializer_list<std::string_view> allowed);
+
+class TomlReader {
+  public:
+    TomlReader(std::string source_name, std::set<std::string> overridden_paths)
+        : source_name_(std::move(source_name)), overridden_(std::move(overridden_paths)) {}
+
+    bool failed() const { return error_.has_value(); }
+    const std::optional<SceneError>& error() const { return error_; }
+
+    // Records an error at `node` (a value read from `path`, a dotted key path).
+    bool fail(const toml::node& node, const std::string& path, std::string what);
+    bool fail_at(const toml::source_region& region, const std::string& path, std::string what);
+
+    // Every key of `table` (at `path`; "" for the root) must be in `allowed`.
+    bool check_keys(const toml::table& table, const std::string& path,
+                    std::initializer_list<std::string_view> allowed);
+
+    // Typed reads of table[key]. A missing key leaves `out` unchanged and succeeds.
+    bool read_int(const toml::table& table, const std::string& path, std::string_view key,
+                  std::int64_t minimum, std::int64_t maximum, std::int64_t& out);
+    // Numbers accept integers too. Non-finite values are errors. `minimum` is exclusive when
+    // `exclusive_minimum`; `maximum` is inclusive.
+    bool read_number(const toml::table& table, const std::string& path, std::string_view key,
+                     double& out, std::optional<double> minimum = std::nullopt,
+                     bool exclusive_minimum = false, std::optional<double> maximum = std::nullopt);
+    bool read_bool(const toml::table& table, const std::string& path, std::string_view key,
+                   bool& out);
+    bool read_string(const toml::table& table, const std::string& path, std::string_view key,
+                     std::string& out);
+    // One of `names`; returns its index in `index`.
+    bool read_choice(const toml::table& table, const std::string& path, std::string_view key,
+                     std::initializer_list<std::string_view> names, int& index);
+    bool read_vec3(const toml::table& table, const std::string& path, std::string_view key,
+                   Vec3d& out);
+
+    // A sub-table (e.g. [cloth]); nullptr if absent, error if present but not a table.
+    const toml::table* sub_table(const toml::table& table, const std::string& path,
+                                 std::string_view key);
+
+    static std::string join(const std::string& path, std::string_view key);
+
+  private:
+    std::string where(const toml::source_region& region, const std::string& path) const;
+
+    std::string source_name_;
+    std::set<std::string> overridden_;
+    std::optional<SceneError> error_;
+};
+
+// "a string", "an integer", ...: for messages.
+std::string describe_type(const toml::node& node);
+
+}  // namespace weft

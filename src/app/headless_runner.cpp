@@ -8,6 +8,8 @@
 #include <optional>
 
 #include "app/state_dump.h"
+#include "raster/png_writer.h"
+#include "view/frame_renderer.h"
 #include "sim/energy.h"
 #include "sim/scene_loader.h"
 #include "sim/simulation.h"
@@ -46,10 +48,6 @@ int run_headless(const CommandLine& command_line) {
     std::optional<Scene> scene =
         load_checked_scene(*command_line.scene_path, command_line.overrides);
     if (!scene) return exit_bad_input;
-    if (command_line.screenshot_path) {
-        print_error("--screenshot", "not available yet: the rasterizer is not built");
-        return exit_bad_input;
-    }
     // Open the dump before running, so an unwritable path fails at once, not after the run.
     std::ofstream dump;
     if (command_line.dump_path) {
@@ -62,6 +60,7 @@ int run_headless(const CommandLine& command_line) {
     }
 
     Simulation simulation(*scene);
+    const float ground_height = view::ground_height_below(simulation.cloth());
     int status = exit_ok;
     for (std::uint64_t step = 0; step < *command_line.steps; ++step) {
         StepReport report = simulation.step();
@@ -77,6 +76,17 @@ int run_headless(const CommandLine& command_line) {
         dump.flush();
         if (!dump) {
             print_error(*command_line.dump_path, "write failed");
+            return exit_bad_input;
+        }
+    }
+    if (command_line.screenshot_path) {
+        raster::Framebuffer framebuffer(command_line.screenshot_width, command_line.screenshot_height);
+        view::ClothView cloth_view(simulation.cloth());
+        view::render_frame(framebuffer, view::scene_camera(*scene), simulation.cloth(), cloth_view,
+                           view::FrameOptions{}, ground_height);
+        std::string error;
+        if (!raster::write_png(framebuffer, *command_line.screenshot_path, &error)) {
+            print_error(*command_line.screenshot_path, error);
             return exit_bad_input;
         }
     }

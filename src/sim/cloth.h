@@ -42,6 +42,7 @@ struct Triangle {
 struct Cloth {
     int rows = 0;  // grid rows the cloth was built from (particle = row * cols + col)
     int cols = 0;
+    double spacing = 0.0;  // m, rest distance between grid neighbours
 
     // Per-step state.
     std::vector<Vec3> positions;   // m

@@ -40,6 +40,7 @@ Cloth build_grid_cloth(const Scene& scene) {
     Cloth cloth;
     cloth.rows = spec.rows;
     cloth.cols = spec.cols;
+    cloth.spacing = spec.spacing;
     const std::size_t count = static_cast<std::size_t>(spec.rows) * spec.cols;
     cloth.positions.resize(count);
     cloth.velocities.assign(count, Vec3(0.0));

@@ -28,20 +28,31 @@ Simulation::Simulation(const Scene& scene)
       step_function_(step_function(scene.solver.integrator)),
       dt_(scene.solver.dt) {
     if (auto why = unsupported_feature(scene)) throw std::invalid_argument(*why);
-    cloth_ = build_grid_cloth(scene);
-    field_.gravity = to_vec3(scene.forces.gravity);
-    field_.air_drag = scene.forces.air_drag;
-    field_.wind = to_vec3(scene.forces.wind);
+    reset();
+}
+
+void Simulation::reset() {
+    cloth_ = build_grid_cloth(scene_);
+    set_force_field(scene_.forces.gravity, scene_.forces.air_drag, scene_.forces.wind);
     workspace_.resize(cloth_.particle_count());
+    drag_ = DragHandle{};
+    time_ = 0.0;
+    steps_taken_ = 0;
 }
 
 StepReport Simulation::step() {
     StepReport report;
+    // The field points at the drag only for the step, so a copied Simulation never holds a
+    // pointer into another one.
+    field_.drag = drag_.active() ? &drag_ : nullptr;
     step_function_(cloth_, field_, dt_, workspace_);
+    field_.drag = nullptr;
     time_ += dt_;
     ++steps_taken_;
     if (scene_.tear_max_stretch)
         report.springs_torn = tear_overstretched_springs(cloth_, *scene_.tear_max_stretch);
+    // Forces changed with the topology; the Verlets' carried acceleration is stale.
+    if (report.springs_torn) workspace_.history_valid = false;
     // With tearing on, a runaway spring breaks instead of stretching without bound, so only
     // non-finite values count as divergence.
     report.divergence = find_divergence(cloth_, /*check_runaway_stretch=*/!scene_.tear_max_stretch);
@@ -58,6 +69,58 @@ void Simulation::set_integrator(Integrator integrator) {
 
 void Simulation::set_dt(double dt) {
     dt_ = dt;
+    scene_.solver.dt = dt;
+    workspace_.history_valid = false;
+}
+
+void Simulation::set_spring_material(SpringFamily family, double stiffness, double damping) {
+    SpringFamilySpec& spec = family == SpringFamily::structural ? scene_.structural
+                             : family == SpringFamily::shear    ? scene_.shear
+                                                                : scene_.bend;
+    spec.stiffness = stiffness;
+    spec.damping = damping;
+    for (SpringGroup& group : cloth_.spring_groups) {
+        if (group.family != family) continue;
+        group.stiffness = stiffness;
+        group.damping = damping;
+    }
+    workspace_.history_valid = false;  // the carried accelerations came from the old forces
+}
+
+void Simulation::set_force_field(const Vec3d& gravity, double air_drag, const Vec3d& wind) {
+    scene_.forces = {gravity, air_drag, wind};
+    field_.gravity = to_vec3(gravity);
+    field_.air_drag = air_drag;
+    field_.wind = to_vec3(wind);
+    workspace_.history_valid = false;
+}
+
+void Simulation::set_tear_limit(std::optional<double> max_stretch) {
+    scene_.tear_max_stretch = max_stretch;
+}
+
+void Simulation::start_drag(DragHandle drag) {
+    drag_ = std::move(drag);
+    workspace_.history_valid = false;
+}
+
+void Simulation::move_drag_target(const Vec3& target) {
+    drag_.target = target;
+    workspace_.history_valid = false;
+}
+
+void Simulation::end_drag() {
+    drag_ = DragHandle{};
+    workspace_.history_valid = false;
+}
+
+void Simulation::set_pinned(std::size_t particle, bool pinned) {
+    weft::set_pinned(cloth_, particle, pinned);
+    workspace_.history_valid = false;
+}
+
+void Simulation::release_all_pins() {
+    while (!cloth_.pinned.empty()) weft::set_pinned(cloth_, cloth_.pinned.back(), false);
     workspace_.history_valid = false;
 }
 

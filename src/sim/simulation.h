@@ -7,9 +7,11 @@
 #include <string>
 
 #include "sim/cloth.h"
+#include "sim/drag.h"
 #include "sim/force_pass.h"
 #include "sim/integrators/integrator.h"
 #include "sim/scene.h"
+#include "sim/topology_edits.h"
 
 namespace weft {
 
@@ -44,8 +46,33 @@ class Simulation {
 
     void set_integrator(Integrator integrator);
     void set_dt(double dt);
-    // Edits of the state from outside (drags, resets) go through here, so that methods that
-    // carry history (the Verlets) restart from the edited state.
+    // Live changes of the model (the demo's panel). The scene() kept here follows them, so a
+    // reset() restarts with the changed parameters.
+    void set_spring_material(SpringFamily family, double stiffness, double damping);
+    void set_force_field(const Vec3d& gravity, double air_drag, const Vec3d& wind);
+    void set_tear_limit(std::optional<double> max_stretch);
+
+    // Back to the scene's initial state (with the parameters as they are now).
+    void reset();
+
+    // The user's hand: grab the cloth where a ray hits it, pull, let go.
+    void start_drag(DragHandle drag);
+    void move_drag_target(const Vec3& target);
+    void end_drag();
+    const DragHandle& drag() const { return drag_; }
+
+    // Pins and the cut tool.
+    void set_pinned(std::size_t particle, bool pinned);
+    void release_all_pins();
+    // Removes the springs for which should_cut(spring) is true, with their triangles.
+    template <class Predicate>
+    std::size_t cut_springs(Predicate should_cut) {
+        workspace_.history_valid = false;
+        return remove_springs_if(cloth_, should_cut);
+    }
+
+    // Edits of the state from outside go through here, so that methods that carry history
+    // (the Verlets) restart from the edited state.
     Cloth& edit_cloth();
 
   private:
@@ -56,6 +83,7 @@ class Simulation {
     StepFunction step_function_;
     double dt_;
     IntegratorWorkspace workspace_;
+    DragHandle drag_;
     double time_ = 0.0;
     std::uint64_t steps_taken_ = 0;
 };

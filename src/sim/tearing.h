@@ -10,7 +10,8 @@ namespace weft {
 // Removes every spring whose length exceeds max_stretch × rest length. All springs are
 // judged against the same state and removed together, so the result does not depend on
 // the order in which springs are visited. Order of the survivors is kept (locality, and
-// results that do not depend on which springs broke first). Returns the number removed.
+// results that do not depend on which springs broke first). Triangles that lost an edge go
+// with them. Returns the number removed.
 std::size_t tear_overstretched_springs(Cloth& cloth, double max_stretch);
 
 }  // namespace weft

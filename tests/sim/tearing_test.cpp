@@ -43,6 +43,19 @@ TEST(Tearing, AHeavyPullTearsTheSheetInsteadOfDiverging) {
     }
     EXPECT_GT(torn, 0u);
     EXPECT_EQ(simulation.cloth().spring_count(), initial - torn);
+    // Every triangle left has all of its structural edges (and so is drawn and pickable).
+    const Cloth& cloth = simulation.cloth();
+    EXPECT_LT(cloth.triangles.size(), 2u * 9 * 9);
+    auto is_spring = [&](std::uint32_t a, std::uint32_t b) {
+        for (const Spring& s : cloth.spring_groups[0].springs)
+            if ((s.i == a && s.j == b) || (s.i == b && s.j == a)) return true;
+        return false;
+    };
+    for (const Triangle& t : cloth.triangles) {
+        // Each grid triangle has one horizontal and one vertical structural edge and a diagonal.
+        int structural_edges = is_spring(t.a, t.b) + is_spring(t.b, t.c) + is_spring(t.c, t.a);
+        EXPECT_EQ(structural_edges, 2);
+    }
     // What is left is within the limit.
     for (const Spring& s : simulation.cloth().spring_groups[0].springs)
         EXPECT_LE(

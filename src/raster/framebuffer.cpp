@@ -1,0 +1,47 @@
+#include "raster/framebuffer.h"
+
+#include <algorithm>
+#include <cassert>
+#include <stdexcept>
+#include <string>
+
+namespace weft::raster {
+namespace {
+
+void check_size(int width, int height) {
+    auto valid = [](int side) { return side >= 1 && side <= Framebuffer::max_side; };
+    if (!valid(width) || !valid(height)) {
+        throw std::invalid_argument("framebuffer size " + std::to_string(width) + "x" +
+                                    std::to_string(height) + " is outside 1.." +
+                                    std::to_string(Framebuffer::max_side) + " per side");
+    }
+}
+
+}  // namespace
+
+Framebuffer::Framebuffer(int width, int height) {
+    resize(width, height);
+    clear(Rgba8{0, 0, 0, 255});
+}
+
+void Framebuffer::resize(int width, int height) {
+    check_size(width, height);
+    width_ = width;
+    height_ = height;
+    const std::size_t count = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    colours_.resize(count);
+    depths_.resize(count);
+}
+
+void Framebuffer::clear(Rgba8 colour, float depth) {
+    std::fill(colours_.begin(), colours_.end(), colour);
+    std::fill(depths_.begin(), depths_.end(), depth);
+}
+
+std::size_t Framebuffer::index(int x, int y) const {
+    assert(contains(x, y));
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
+           static_cast<std::size_t>(x);
+}
+
+}  // namespace weft::raster

@@ -1,0 +1,28 @@
+// A ground grid: square cells on the horizontal plane y = height, drawn as depth-tested
+// lines so the cloth and colliders sit visibly above (or fall through) the floor.
+#pragma once
+
+#include <glm/vec2.hpp>
+
+#include "raster/camera.h"
+#include "raster/colour.h"
+#include "raster/framebuffer.h"
+#include "raster/line_renderer.h"
+
+namespace weft::raster {
+
+struct GroundGrid {
+    float height = 0.0f;           // y of the plane
+    glm::vec2 centre{0.0f, 0.0f};  // (x, z) of the grid's centre
+    int cell_count = 20;           // cells per side (clamped to 1..1000)
+    float cell_size = 0.25f;       // m
+    Rgba8 colour{92, 96, 104, 255};
+    Rgba8 centre_colour{130, 136, 148, 255};  // the two lines through the centre
+};
+
+// Draws cell_count + 1 lines in each direction. Lines running behind the camera are clipped
+// at the near plane, so the grid never wraps over the sky.
+void draw_ground_grid(Framebuffer& framebuffer, const Camera& camera, const GroundGrid& grid,
+                      const LineStyle& style = {});
+
+}  // namespace weft::raster

@@ -1,0 +1,62 @@
+// Mesh drawing with two-sided lighting, for the cloth and the colliders.
+//
+// The shading model: one directional light plus ambient (and a weak fill from the eye, see
+// Lighting). Lambert diffuse and a soft Blinn–Phong highlight, evaluated per pixel from the
+// interpolated normal; the normal is
+// flipped on back faces so both sides of the cloth are lit as the side facing the camera.
+// The two sides get distinct colours, and an optional checker or stripe pattern from the
+// (u, v) coordinates makes folds and stretching readable.
+#pragma once
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "raster/camera.h"
+#include "raster/framebuffer.h"
+#include "raster/mesh.h"
+#include "raster/pixel_rect.h"
+
+namespace weft::raster {
+
+enum class SurfacePattern { none, checker, stripes };
+
+struct SurfaceStyle {
+    glm::vec3 front_colour{0.86f, 0.38f, 0.24f};  // terracotta
+    glm::vec3 back_colour{0.26f, 0.48f, 0.78f};   // steel blue: the underside reads at a glance
+    SurfacePattern pattern = SurfacePattern::none;
+    float pattern_frequency = 8.0f;  // cells (or stripes) per unit of u and of v
+    float pattern_contrast = 0.3f;   // alternate cells are this fraction darker
+    float specular_strength = 0.2f;
+    float shininess = 16.0f;  // Blinn–Phong exponent; low keeps the highlight broad and soft
+};
+
+struct Lighting {
+    glm::vec3 direction_to_light{0.36f, 0.80f, 0.48f};  // world space; normalised when used
+    glm::vec3 light_colour{0.85f, 0.85f, 0.82f};
+    glm::vec3 ambient_colour{0.22f, 0.22f, 0.25f};
+    // A weak diffuse light at the eye. Whichever side of the cloth faces away from the main
+    // light would otherwise get only flat ambient and lose its folds; this keeps their shape
+    // readable from any viewpoint. Zero turns it off.
+    glm::vec3 eye_fill_colour{0.22f, 0.22f, 0.22f};
+};
+
+// Base-colour multiplier of the pattern at (u, v): 1, or 1 - contrast on alternate cells.
+float pattern_factor(const SurfaceStyle& style, const glm::vec2& uv);
+
+// The lit colour of one surface point (unclamped RGB), exactly as draw_mesh shades each
+// pixel. `normal` is the interpolated vertex normal (pointing out of the front; need not be
+// unit length), `to_eye` the unit vector from the point towards the eye. Back faces use the
+// flipped normal. The highlight is skipped where it would stay below half an 8-bit step.
+glm::vec3 shade_surface(const SurfaceStyle& style, const Lighting& lighting,
+                        const glm::vec3& base_colour, const glm::vec3& normal,
+                        const glm::vec3& to_eye, bool front_facing);
+
+// Draws every triangle of the mesh, depth-tested, both sides. Returns false (drawing
+// nothing) if the per-vertex arrays do not match positions in size; triangles with an index
+// out of range are skipped. Allocates once per call (the transformed vertices), nothing per
+// triangle.
+bool draw_mesh(Framebuffer& framebuffer, const Camera& camera, const MeshView& mesh,
+               const SurfaceStyle& style, const Lighting& lighting,
+               const PixelRect& scissor = PixelRect::unbounded());
+
+}  // namespace weft::raster

@@ -1,0 +1,227 @@
+// Triangle rasterization: draws one clip-space triangle into a framebuffer, calling a shader
+// for every pixel it covers that passes the depth test.
+//
+// The pipeline, one stage per step (transform happens before, in the caller):
+//   1. cull     — all vertices outside one frustum plane: nothing to draw.
+//   2. clip     — near plane (and guard band) in clip space: clipping.h.
+//   3. setup    — divide, viewport, fixed point, facing, edge functions, clamped bounding box:
+//                 triangle_setup.h.
+//   4. traverse — walk the box row by row, edge functions stepped incrementally.
+//   5. depth    — interpolate window depth (affine in screen space), test against the buffer.
+//   6. shade    — interpolate varyings perspective-correctly, call the shader, write.
+//
+// The shader is a template parameter so it inlines into the pixel loop: anything callable as
+//     Rgba8 shader(const Fragment& fragment)
+// A shader type may also declare `static constexpr int varying_count = N;`: then N replaces
+// RasterState::varying_count and the interpolation loop is unrolled at compile time.
+// Nothing here allocates; the framebuffer, scissor and state are passed in, never global.
+// Both windings are drawn (there is no back-face culling); Fragment::front_facing tells the
+// shader which side it sees.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
+#include <utility>
+
+#include "raster/clipping.h"
+#include "raster/colour.h"
+#include "raster/framebuffer.h"
+#include "raster/pixel_rect.h"
+#include "raster/triangle_setup.h"
+
+namespace weft::raster {
+
+struct RasterState {
+    PixelRect scissor = PixelRect::unbounded();  // intersected with the framebuffer per draw
+    bool depth_test = true;                      // keep a fragment only if nearer (<) than stored
+    bool depth_write = true;
+    int varying_count = 0;  // how many ClipVertex::varyings to interpolate (0..max_varyings)
+};
+
+struct Fragment {
+    int x = 0, y = 0;                 // pixel
+    float depth = 0.0f;               // window depth [0, 1] at the pixel centre
+    bool front_facing = true;         // counter-clockwise on screen (see triangle_setup.h)
+    const float* varyings = nullptr;  // RasterState::varying_count values, perspective-correct
+};
+
+namespace detail {
+
+// The shader's compile-time varying count, or -1 if it does not declare one.
+template <class Shader>
+constexpr int static_varying_count() {
+    using Type = std::remove_cvref_t<Shader>;
+    if constexpr (requires { Type::varying_count; }) {
+        static_assert(Type::varying_count >= 0 && Type::varying_count <= max_varyings);
+        return Type::varying_count;
+    } else {
+        return -1;
+    }
+}
+
+// Stages 4–6 for one set-up triangle.
+//
+// Everything the loop reads is copied into locals first: colour stores go through unsigned
+// char, which may alias anything, so values read through a reference would be reloaded
+// after every pixel written.
+template <class Shader>
+void traverse_and_shade(Framebuffer& framebuffer, const RasterState& state,
+                        const TriangleSetup& setup, const ClipVertex* const (&vertex)[3],
+                        Shader& shader) {
+    const std::size_t width = static_cast<std::size_t>(framebuffer.width());
+    Rgba8* const colours = framebuffer.colours().data();
+    float* const depths = framebuffer.depths().data();
+    constexpr int fixed_varying_count = static_varying_count<Shader>();
+    const int varying_count = fixed_varying_count >= 0 ? fixed_varying_count : state.varying_count;
+    const bool depth_test = state.depth_test;
+    const bool depth_write = state.depth_write;
+    const int x_begin = setup.x_begin, x_end = setup.x_end;
+    const std::int64_t step_x0 = setup.step_x[0], step_x1 = setup.step_x[1],
+                       step_x2 = setup.step_x[2];
+    const std::int64_t bias0 = setup.bias[0], bias1 = setup.bias[1], bias2 = setup.bias[2];
+    const double inverse_step_x0 = setup.inverse_step_x[0],
+                 inverse_step_x1 = setup.inverse_step_x[1],
+                 inverse_step_x2 = setup.inverse_step_x[2];
+    const float inverse_area = setup.inverse_doubled_area;
+    const float depth0 = setup.depth[0], depth1 = setup.depth[1], depth2 = setup.depth[2];
+    const float inverse_w0 = setup.inverse_w[0], inverse_w1 = setup.inverse_w[1],
+                inverse_w2 = setup.inverse_w[2];
+
+    // Per-vertex varyings in setup order, pre-divided by w: a/w and 1/w are affine in screen
+    // space, so their barycentric blend divided by the blended 1/w is the perspective-correct
+    // value (the same trick GPUs use).
+    std::array<std::array<float, max_varyings>, 3> varying_over_w;
+    for (int i = 0; i < 3; ++i) {
+        for (int k = 0; k < varying_count; ++k) {
+            varying_over_w[i][k] = vertex[i]->varyings[k] * setup.inverse_w[i];
+        }
+    }
+    std::array<float, max_varyings> varyings{};
+    Fragment fragment;
+    fragment.front_facing = setup.front_facing;
+    fragment.varyings = varyings.data();
+
+    std::int64_t row0 = setup.edge_origin[0], row1 = setup.edge_origin[1],
+                 row2 = setup.edge_origin[2];
+    for (int y = setup.y_begin; y < setup.y_end;
+         ++y, row0 += setup.step_y[0], row1 += setup.step_y[1], row2 += setup.step_y[2]) {
+        std::int64_t e0 = row0, e1 = row1, e2 = row2;
+        // A row outside an edge that does not grow to the right stays outside.
+        if ((e0 < 0 && step_x0 <= 0) || (e1 < 0 && step_x1 <= 0) || (e2 < 0 && step_x2 <= 0)) {
+            continue;
+        }
+
+        // Traverse: left-bounding edges (step_x > 0) say how many pixels of this row are
+        // certainly outside. The floating-point estimate is backed off by one pixel so it
+        // never skips a covered pixel; coverage itself is decided exactly below.
+        int x = x_begin;
+        {
+            double skip = 0.0;
+            if (e0 < 0) skip = std::max(skip, static_cast<double>(-e0) * inverse_step_x0);
+            if (e1 < 0) skip = std::max(skip, static_cast<double>(-e1) * inverse_step_x1);
+            if (e2 < 0) skip = std::max(skip, static_cast<double>(-e2) * inverse_step_x2);
+            const double available = static_cast<double>(x_end - x_begin);
+            const int jump = static_cast<int>(std::min(std::floor(skip) - 1.0, available));
+            if (jump > 0) {
+                x += jump;
+                e0 += step_x0 * jump;
+                e1 += step_x1 * jump;
+                e2 += step_x2 * jump;
+            }
+        }
+
+        const std::size_t row_offset = static_cast<std::size_t>(y) * width;
+        bool entered = false;
+        for (; x < x_end; ++x, e0 += step_x0, e1 += step_x1, e2 += step_x2) {
+            if ((e0 | e1 | e2) < 0) {
+                if (entered) break;  // convex: once out again, the rest of the row is out
+                continue;
+            }
+            entered = true;
+
+            // Depth: window depth is affine in screen space, so plain barycentrics suffice.
+            const float b0 = static_cast<float>(e0 - bias0) * inverse_area;
+            const float b1 = static_cast<float>(e1 - bias1) * inverse_area;
+            const float b2 = static_cast<float>(e2 - bias2) * inverse_area;
+            const float depth = b0 * depth0 + b1 * depth1 + b2 * depth2;
+            const std::size_t index = row_offset + static_cast<std::size_t>(x);
+            if (depth_test && !(depth < depths[index])) continue;
+
+            // Shade: perspective-correct varyings, then the shader decides the colour.
+            if (varying_count > 0) {
+                const float w = 1.0f / (b0 * inverse_w0 + b1 * inverse_w1 + b2 * inverse_w2);
+                for (int k = 0; k < varying_count; ++k) {
+                    varyings[k] = (b0 * varying_over_w[0][k] + b1 * varying_over_w[1][k] +
+                                   b2 * varying_over_w[2][k]) *
+                                  w;
+                }
+            }
+            fragment.x = x;
+            fragment.y = y;
+            fragment.depth = depth;
+            colours[index] = shader(static_cast<const Fragment&>(fragment));
+            if (depth_write) depths[index] = depth;
+        }
+    }
+}
+
+template <class Shader>
+void rasterize_clipped(Framebuffer& framebuffer, const RasterState& state, const PixelRect& scissor,
+                       const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
+                       Shader& shader) {
+    TriangleSetup setup;
+    if (!setup_triangle(a.position, b.position, c.position, framebuffer.width(),
+                        framebuffer.height(), scissor, setup)) {
+        return;
+    }
+    const ClipVertex* const input[3] = {&a, &b, &c};
+    const ClipVertex* const ordered[3] = {
+        input[setup.vertex_order[0]], input[setup.vertex_order[1]], input[setup.vertex_order[2]]};
+    traverse_and_shade(framebuffer, state, setup, ordered, shader);
+}
+
+}  // namespace detail
+
+// Draws triangle (a, b, c) whose vertex outcodes (clip_outcode) the caller already has —
+// mesh drawing computes them once per vertex rather than once per triangle corner.
+template <class Shader>
+void draw_triangle(Framebuffer& framebuffer, const RasterState& state, const ClipVertex& a,
+                   const ClipVertex& b, const ClipVertex& c, const TriangleOutcodes& outcodes,
+                   Shader&& shader) {
+    // 1. Cull: entirely outside one plane of the view frustum.
+    if (outcodes.culled()) return;
+    const PixelRect scissor = state.scissor.intersect(framebuffer.bounds());
+    if (scissor.empty()) return;
+    RasterState clamped = state;
+    constexpr int fixed_varying_count = detail::static_varying_count<Shader>();
+    clamped.varying_count = fixed_varying_count >= 0
+                                ? fixed_varying_count
+                                : std::clamp(state.varying_count, 0, max_varyings);
+
+    if (!outcodes.needs_clipping()) {
+        detail::rasterize_clipped(framebuffer, clamped, scissor, a, b, c, shader);
+        return;
+    }
+    // 2. Clip against the near plane (and the guard band); draw what is left as a fan.
+    ClippedPolygon polygon;
+    clip_triangle(a, b, c, (outcodes.a | outcodes.b | outcodes.c) & clipping_planes,
+                  clamped.varying_count, polygon);
+    for (int i = 1; i + 1 < polygon.count; ++i) {
+        detail::rasterize_clipped(framebuffer, clamped, scissor, polygon.vertices[0],
+                                  polygon.vertices[i], polygon.vertices[i + 1], shader);
+    }
+}
+
+template <class Shader>
+void draw_triangle(Framebuffer& framebuffer, const RasterState& state, const ClipVertex& a,
+                   const ClipVertex& b, const ClipVertex& c, Shader&& shader) {
+    const TriangleOutcodes outcodes{clip_outcode(a.position), clip_outcode(b.position),
+                                    clip_outcode(c.position)};
+    draw_triangle(framebuffer, state, a, b, c, outcodes, std::forward<Shader>(shader));
+}
+
+}  // namespace weft::raster

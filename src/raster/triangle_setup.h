@@ -1,0 +1,69 @@
+// Triangle setup: from three clip-space positions (already clipped, w > 0) to what the pixel
+// loop needs. Stages:
+//   perspective divide  →  viewport  →  snap to fixed point  →  winding / facing
+//   →  edge functions with the top-left fill rule  →  bounding box clamped to the scissor.
+//
+// Fixed point (Giesen, "The barycentric conspiracy" / "Triangle rasterization in practice"):
+// window coordinates are rounded to 1/256 pixel. Every later coverage decision is exact
+// integer arithmetic on those snapped values, so two triangles sharing an edge see exactly
+// opposite edge functions along it, and the top-left rule gives each pixel centre on the edge
+// to exactly one of them: no cracks, no pixel drawn twice.
+//
+// Edge function of the directed edge a→b at point p (window space, y down):
+//     E(p) = (a.y - b.y)·p.x + (b.x - a.x)·p.y + (a.x·b.y - a.y·b.x)
+// Setup orders the vertices so E > 0 inside for all three edges. Its gradient (A, B) points
+// inwards; a pixel centre exactly on an edge (E = 0) belongs to the triangle only if the edge
+// is a left edge (A > 0: the inside is to its right) or a top edge (A = 0, B > 0: horizontal
+// with the inside below). Non-top-left edges get a bias of -1 so "covered" is simply
+// "all three biased values >= 0".
+#pragma once
+
+#include <cstdint>
+
+#include <glm/vec4.hpp>
+
+#include "raster/pixel_rect.h"
+
+namespace weft::raster {
+
+inline constexpr int subpixel_bits = 8;
+inline constexpr std::int64_t subpixel_scale = std::int64_t{1} << subpixel_bits;  // 256
+
+struct TriangleSetup {
+    // Pixels to visit: the bounding box of the snapped triangle ∩ the scissor, half-open.
+    int x_begin = 0, y_begin = 0, x_end = 0, y_end = 0;
+
+    // Biased edge functions at the centre of pixel (x_begin, y_begin), in units of
+    // 1/256² pixel², and their change per pixel step in x and in y. Edge i is opposite
+    // vertex i, so its unbiased value divided by the doubled area is vertex i's barycentric.
+    std::int64_t edge_origin[3] = {};
+    std::int64_t step_x[3] = {};
+    std::int64_t step_y[3] = {};
+    std::int64_t bias[3] = {};  // 0 for top-left edges, -1 otherwise (already in edge_origin)
+
+    // 1 / step_x for edges that bound the span from the left (step_x > 0), else 0: lets the
+    // pixel loop jump to near the first covered pixel of a row instead of testing every one.
+    double inverse_step_x[3] = {};
+
+    float inverse_doubled_area = 0.0f;  // 1 / (sum of the three unbiased edge values)
+    float depth[3] = {};                // window depth of each vertex, [0, 1]
+    float inverse_w[3] = {};            // 1/w of each vertex, for perspective correction
+
+    // Setup vertex i is input vertex vertex_order[i]: front-facing triangles swap two
+    // vertices so that the edge functions are positive inside.
+    int vertex_order[3] = {0, 1, 2};
+
+    // Counter-clockwise on screen, i.e. counter-clockwise seen from the side it is viewed
+    // from — OpenGL's default front face. A mesh listing its triangles counter-clockwise
+    // seen from the front therefore shows its front where front_facing is true.
+    bool front_facing = true;
+};
+
+// Returns false if nothing can be drawn: zero area after snapping, or no pixel centre of
+// the bounding box inside `scissor` (which must already lie inside the framebuffer).
+// The positions must have w > 0 and lie inside the guard band (see clipping.h).
+bool setup_triangle(const glm::vec4& clip0, const glm::vec4& clip1, const glm::vec4& clip2,
+                    int viewport_width, int viewport_height, const PixelRect& scissor,
+                    TriangleSetup& setup);
+
+}  // namespace weft::raster

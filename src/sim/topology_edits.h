@@ -1,0 +1,46 @@
+// Edits of the cloth's topology: removing springs (tearing, the cut tool) together with the
+// triangles they held, and pinning or freeing particles. Triangles are kept consistent with
+// the springs here, in sim, so everything downstream (drawing, picking) sees intact cloth.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "sim/cloth.h"
+
+namespace weft {
+
+// The key of the undirected edge (a, b).
+inline std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
+    return a < b ? (static_cast<std::uint64_t>(a) << 32) | b : (static_cast<std::uint64_t>(b) << 32) | a;
+}
+
+// Removes every triangle one of whose edges is in `removed_edges` (keys from edge_key; the
+// vector is sorted here).
+void remove_triangles_on_edges(Cloth& cloth, std::vector<std::uint64_t>& removed_edges);
+
+// Removes every spring for which `should_remove(spring)` is true, judging all of them on the
+// current state before removing any, and then every triangle one of whose edges was a
+// removed spring. Survivors keep their order. Returns the number of springs removed.
+// A template so the per-spring test inlines: tearing runs this over every spring each step.
+template <class Predicate>
+std::size_t remove_springs_if(Cloth& cloth, Predicate should_remove) {
+    // Removals are rare (a few springs in a step that tears), so their edges go into a small
+    // vector; the common case of no removal allocates nothing.
+    std::vector<std::uint64_t> removed_edges;
+    for (SpringGroup& group : cloth.spring_groups) {
+        std::erase_if(group.springs, [&](const Spring& spring) {
+            if (!should_remove(spring)) return false;
+            removed_edges.push_back(edge_key(spring.i, spring.j));
+            return true;
+        });
+    }
+    if (!removed_edges.empty()) remove_triangles_on_edges(cloth, removed_edges);
+    return removed_edges.size();
+}
+
+// Pins (inverse mass 0, velocity 0) or frees (inverse mass 1/m) one particle.
+void set_pinned(Cloth& cloth, std::size_t particle, bool pinned);
+
+}  // namespace weft

@@ -1,0 +1,68 @@
+#include "view/cloth_view.h"
+
+#include <algorithm>
+#include <glm/geometric.hpp>
+
+#include "raster/strain_colour.h"
+
+namespace weft::view {
+
+ClothView::ClothView(const Cloth& cloth) {
+    const std::size_t count = cloth.particle_count();
+    positions_.resize(count);
+    normals_.resize(count);
+    uvs_.resize(count);
+    // Texture coordinates in metres of rest fabric, so a pattern keeps its size whatever the
+    // grid resolution.
+    const double spacing = cloth.spacing;
+    for (std::size_t p = 0; p < count; ++p)
+        uvs_[p] = glm::vec2(static_cast<float>(static_cast<double>(p % cloth.cols) * spacing),
+                            static_cast<float>(static_cast<double>(p / cloth.cols) * spacing));
+    rebuild_topology(cloth);
+    update(cloth);
+}
+
+void ClothView::rebuild_topology(const Cloth& cloth) {
+    spring_count_ = cloth.spring_count();
+    triangle_count_ = cloth.triangles.size();
+    spring_lines_.clear();
+    for (const SpringGroup& group : cloth.spring_groups)
+        for (const Spring& spring : group.springs) spring_lines_.push_back({spring.i, spring.j});
+    intact_triangles_.clear();
+    for (const Triangle& t : cloth.triangles) intact_triangles_.push_back({t.a, t.b, t.c});
+    wireframe_edges_ = raster::unique_edges(intact_triangles_);
+}
+
+void ClothView::update(const Cloth& cloth) {
+    if (cloth.spring_count() != spring_count_ || cloth.triangles.size() != triangle_count_)
+        rebuild_topology(cloth);
+    for (std::size_t p = 0; p < positions_.size(); ++p) positions_[p] = glm::vec3(cloth.positions[p]);
+    raster::compute_vertex_normals(positions_, intact_triangles_, normals_);
+}
+
+std::span<const raster::Rgba8> ClothView::particle_colours(const Cloth& cloth) {
+    particle_colours_.assign(cloth.particle_count(), raster::Rgba8{230, 230, 230, 255});
+    for (std::uint32_t p : cloth.pinned) particle_colours_[p] = raster::Rgba8{255, 210, 40, 255};
+    return particle_colours_;
+}
+
+raster::MeshView ClothView::mesh() const {
+    return {positions_, normals_, intact_triangles_, uvs_, {}, glm::mat4(1.0f)};
+}
+
+std::span<const raster::Rgba8> ClothView::spring_colours(const Cloth& cloth) {
+    spring_line_colours_.resize(spring_lines_.size());
+    largest_strain_ = 0.0f;
+    std::size_t line = 0;
+    for (const SpringGroup& group : cloth.spring_groups) {
+        for (const Spring& spring : group.springs) {
+            const double length = glm::length(cloth.positions[spring.j] - cloth.positions[spring.i]);
+            const auto strain = static_cast<float>(length / spring.rest_length - 1.0);
+            largest_strain_ = std::max(largest_strain_, strain);
+            spring_line_colours_[line++] = raster::to_rgba8(raster::colour_for_strain(strain));
+        }
+    }
+    return spring_line_colours_;
+}
+
+}  // namespace weft::view

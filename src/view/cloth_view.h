@@ -1,0 +1,57 @@
+// ClothView: turns the cloth's current state into what the rasterizer draws — float
+// positions, per-vertex normals, the triangles still intact (sim removes torn ones), texture
+// coordinates for the pattern, and springs as lines coloured by strain. Used by the demo,
+// the headless screenshot and the benchmarks, so they all show the same pixels.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "raster/colour.h"
+#include "raster/mesh.h"
+#include "sim/cloth.h"
+
+namespace weft::view {
+
+class ClothView {
+public:
+    explicit ClothView(const Cloth& cloth);
+
+    // Copies positions, recomputes normals and, when springs were torn or cut since the last
+    // call, the triangle and line lists. Allocates only when the topology changed.
+    void update(const Cloth& cloth);
+
+    // The cloth as a mesh: positions, normals, intact triangles, uvs (metres along the cloth).
+    raster::MeshView mesh() const;
+    std::span<const glm::vec3> positions() const { return positions_; }
+    std::span<const raster::TriangleIndices> triangles() const { return intact_triangles_; }
+    // Every edge of the intact triangles once: the wireframe.
+    std::span<const raster::LineIndices> wireframe_edges() const { return wireframe_edges_; }
+    // One colour per particle: pinned ones highlighted.
+    std::span<const raster::Rgba8> particle_colours(const Cloth& cloth);
+
+    // Every live spring as a line, and its colour by strain (|d|/L - 1): neutral at rest,
+    // warm when stretched, cool when compressed. Recomputed on each call.
+    std::span<const raster::LineIndices> spring_lines() const { return spring_lines_; }
+    std::span<const raster::Rgba8> spring_colours(const Cloth& cloth);
+
+    // Largest strain (|d|/L - 1) over all live springs at the last spring_colours() call.
+    float largest_strain() const { return largest_strain_; }
+
+private:
+    void rebuild_topology(const Cloth& cloth);
+
+    std::vector<glm::vec3> positions_;
+    std::vector<glm::vec3> normals_;
+    std::vector<glm::vec2> uvs_;
+    std::vector<raster::TriangleIndices> intact_triangles_;
+    std::vector<raster::LineIndices> wireframe_edges_;
+    std::vector<raster::Rgba8> particle_colours_;
+    std::vector<raster::LineIndices> spring_lines_;
+    std::vector<raster::Rgba8> spring_line_colours_;
+    std::size_t spring_count_ = 0;
+    std::size_t triangle_count_ = 0;
+    float largest_strain_ = 0.0f;
+};
+
+}  // namespace weft::view

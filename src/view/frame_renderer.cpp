@@ -1,0 +1,66 @@
+#include "view/frame_renderer.h"
+
+#include <algorithm>
+
+#include "raster/ground_grid.h"
+#include "raster/line_renderer.h"
+
+namespace weft::view {
+
+raster::SurfaceStyle FrameOptions::default_surface() {
+    raster::SurfaceStyle style;
+    style.pattern = raster::SurfacePattern::checker;
+    style.pattern_frequency = 10.0f;  // cells per metre of rest fabric: 10 cm squares
+    style.pattern_contrast = 0.25f;
+    return style;
+}
+
+raster::Camera scene_camera(const Scene& scene) {
+    auto to_vec3 = [](const Vec3d& v) {
+        return glm::vec3(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
+    };
+    return raster::make_camera(to_vec3(scene.camera.position), to_vec3(scene.camera.target),
+                               static_cast<float>(scene.camera.fov_degrees));
+}
+
+float ground_height_below(const Cloth& cloth) {
+    // Below the lowest point the cloth starts at, and below the lowest point it can reach
+    // hanging from its pins (a cloth edge's length below the lowest pin).
+    double lowest = 0.0;
+    for (const Vec3& x : cloth.positions) lowest = std::min(lowest, x.y);
+    const double cloth_length = std::max(cloth.rows, cloth.cols) * cloth.spacing;
+    for (std::uint32_t p : cloth.pinned) lowest = std::min(lowest, cloth.positions[p].y - cloth_length);
+    return static_cast<float>(lowest) - 0.1f;  // m
+}
+
+void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera,
+                  const Cloth& cloth, ClothView& view, const FrameOptions& options,
+                  float ground_height) {
+    framebuffer.clear(options.background);
+    view.update(cloth);
+    if (options.ground) {
+        raster::GroundGrid grid;
+        grid.height = ground_height;
+        raster::draw_ground_grid(framebuffer, camera, grid);
+    }
+    if (options.shaded) {
+        raster::Lighting lighting = options.lighting;
+        if (options.light_over_shoulder) {
+            // A key light above and behind the viewer's right shoulder: whichever side of the
+            // cloth faces the camera is lit, as a photographer would light fabric.
+            const raster::CameraBasis basis = raster::camera_basis(camera);
+            lighting.direction_to_light = -basis.forward + 0.9f * basis.up + 0.5f * basis.right;
+        }
+        raster::draw_mesh(framebuffer, camera, view.mesh(), options.surface, lighting);
+    }
+    if (options.wireframe)
+        raster::draw_indexed_lines(framebuffer, camera, view.positions(), view.wireframe_edges(),
+                                   raster::Rgba8{20, 20, 24, 255});
+    if (options.strain_springs)
+        raster::draw_indexed_lines(framebuffer, camera, view.positions(), view.spring_lines(),
+                                   view.spring_colours(cloth));
+    if (options.particles)
+        raster::draw_points(framebuffer, camera, view.positions(), view.particle_colours(cloth), 4.0f);
+}
+
+}  // namespace weft::view

@@ -1,0 +1,38 @@
+// One frame of weft: clear, ground grid, shaded cloth, optional wireframe / strain-coloured
+// springs / particles. The headless screenshot and the window draw through this same code.
+#pragma once
+
+#include "raster/camera.h"
+#include "raster/framebuffer.h"
+#include "raster/mesh_renderer.h"
+#include "sim/cloth.h"
+#include "sim/scene.h"
+#include "view/cloth_view.h"
+
+namespace weft::view {
+
+struct FrameOptions {
+    bool shaded = true;           // the lit, two-sided cloth surface
+    bool wireframe = false;       // triangle edges over the surface
+    bool strain_springs = false;  // every spring as a line coloured by its strain
+    bool particles = false;       // particles as points, pinned ones highlighted
+    bool ground = true;           // the ground grid
+    raster::SurfaceStyle surface = default_surface();
+    raster::Lighting lighting;
+    bool light_over_shoulder = true;  // overrides lighting.direction_to_light to follow the camera
+    raster::Rgba8 background{28, 30, 36, 255};
+
+    static raster::SurfaceStyle default_surface();
+};
+
+// The scene's [camera] as the rasterizer's camera.
+raster::Camera scene_camera(const Scene& scene);
+
+// Where the ground grid goes: below the cloth, as it starts and as it can hang from its pins.
+float ground_height_below(const Cloth& cloth);
+
+void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera,
+                  const Cloth& cloth, ClothView& view, const FrameOptions& options,
+                  float ground_height);
+
+}  // namespace weft::view

@@ -1,0 +1,295 @@
+// Mesh drawing and its shading. Truths: hand-computed normals of simple shapes; the shading
+// formula evaluated by hand for a flat quad (every pixel sees the same normal); which colour
+// each side shows from which side; a sphere's silhouette against the analytic disc.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "raster/camera.h"
+#include "raster/framebuffer.h"
+#include "raster/mesh.h"
+#include "raster/mesh_renderer.h"
+#include "raster/sphere.h"
+#include "raster_test_support.h"
+
+namespace weft::raster {
+namespace {
+
+constexpr Rgba8 background{0, 0, 0, 255};
+
+// A unit square in the z = 0 plane, counter-clockwise seen from +z (its front).
+struct Square {
+    std::vector<glm::vec3> positions{
+        {-0.5f, -0.5f, 0}, {0.5f, -0.5f, 0}, {0.5f, 0.5f, 0}, {-0.5f, 0.5f, 0}};
+    std::vector<glm::vec3> normals = std::vector<glm::vec3>(4, glm::vec3(0, 0, 1));
+    std::vector<glm::vec2> uvs{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    std::vector<TriangleIndices> triangles{{0, 1, 2}, {0, 2, 3}};
+    MeshView view() const { return {positions, normals, triangles, uvs}; }
+};
+
+// Lighting that makes the output the base colour itself: ambient 1, nothing else.
+Lighting unlit() {
+    Lighting lighting;
+    lighting.ambient_colour = glm::vec3(1.0f);
+    lighting.light_colour = glm::vec3(0.0f);
+    lighting.eye_fill_colour = glm::vec3(0.0f);
+    return lighting;
+}
+
+SurfaceStyle two_colours() {
+    SurfaceStyle style;
+    style.front_colour = {0.8f, 0.2f, 0.1f};
+    style.back_colour = {0.1f, 0.3f, 0.9f};
+    style.specular_strength = 0.0f;
+    return style;
+}
+
+TEST(VertexNormals, FlatGridHasThePlaneNormalEverywhere) {
+    std::vector<glm::vec3> positions;
+    std::vector<TriangleIndices> triangles;
+    const int n = 5;
+    for (int r = 0; r < n; ++r) {
+        for (int c = 0; c < n; ++c)
+            positions.push_back(
+                {0.3f * static_cast<float>(c), 0.0f, -0.2f * static_cast<float>(r)});
+    }
+    for (std::uint32_t r = 0; r + 1 < n; ++r) {
+        for (std::uint32_t c = 0; c + 1 < n; ++c) {
+            const std::uint32_t i = r * n + c;
+            triangles.push_back({i, i + 1, i + n});  // counter-clockwise seen from +y
+            triangles.push_back({i + 1, i + n + 1, i + n});
+        }
+    }
+    for (const glm::vec3& normal : compute_vertex_normals(positions, triangles)) {
+        EXPECT_NEAR(normal.x, 0.0f, 1e-6f);
+        EXPECT_NEAR(normal.y, 1.0f, 1e-6f);
+        EXPECT_NEAR(normal.z, 0.0f, 1e-6f);
+    }
+}
+
+TEST(VertexNormals, AreWeightedByTriangleArea) {
+    // Vertex 0 is shared by a triangle of area 2 in the z = 0 plane (normal +z) and one of
+    // area 1/2 in the x = 0 plane (normal +x): the sum is (1/2, 0, 2), normalised.
+    const std::vector<glm::vec3> positions{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0, 1, 0}, {0, 0, 1}};
+    const std::vector<TriangleIndices> triangles{{0, 1, 2}, {0, 3, 4}};
+    const std::vector<glm::vec3> normals = compute_vertex_normals(positions, triangles);
+    const glm::vec3 expected = glm::normalize(glm::vec3(0.5f, 0.0f, 2.0f));
+    EXPECT_NEAR(normals[0].x, expected.x, 1e-6f);
+    EXPECT_NEAR(normals[0].y, expected.y, 1e-6f);
+    EXPECT_NEAR(normals[0].z, expected.z, 1e-6f);
+    EXPECT_NEAR(normals[1].z, 1.0f, 1e-6f);
+    EXPECT_NEAR(normals[4].x, 1.0f, 1e-6f);
+}
+
+TEST(VertexNormals, UnusedVertexAndBadIndicesGiveZeroWithoutCrashing) {
+    const std::vector<glm::vec3> positions{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {5, 5, 5}};
+    const std::vector<TriangleIndices> triangles{{0, 1, 2}, {0, 1, 99}};
+    const std::vector<glm::vec3> normals = compute_vertex_normals(positions, triangles);
+    EXPECT_EQ(normals[3], glm::vec3(0.0f));
+    EXPECT_NEAR(normals[0].z, 1.0f, 1e-6f);
+}
+
+TEST(UniqueEdges, ListsEachEdgeOfAQuadOnce) {
+    const std::vector<TriangleIndices> triangles{{0, 1, 2}, {0, 2, 3}};
+    const std::vector<LineIndices> expected{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {2, 3}};
+    EXPECT_EQ(unique_edges(triangles), expected);
+}
+
+TEST(MeshRenderer, ShowsFrontColourFromTheFrontAndBackColourFromBehind) {
+    const Square square;
+    Framebuffer fb(32, 32);
+    for (float side : {1.0f, -1.0f}) {
+        fb.clear(background);
+        Camera camera = make_camera({0.2f, 0.1f, 2.0f * side}, {0, 0, 0}, 50.0f);
+        ASSERT_TRUE(draw_mesh(fb, camera, square.view(), two_colours(), unlit()));
+        const glm::vec3 expected =
+            side > 0 ? two_colours().front_colour : two_colours().back_colour;
+        EXPECT_EQ(fb.colour(16, 16), to_rgba8(expected)) << (side > 0 ? "front" : "back");
+    }
+}
+
+TEST(MeshRenderer, VertexColoursReplaceBothSideColours) {
+    Square square;
+    const std::vector<glm::vec3> colours(4, glm::vec3(0.2f, 0.7f, 0.3f));
+    MeshView view = square.view();
+    view.colours = colours;
+    Framebuffer fb(32, 32);
+    for (float side : {1.0f, -1.0f}) {
+        fb.clear(background);
+        ASSERT_TRUE(draw_mesh(fb, make_camera({0, 0, 2.0f * side}, {0, 0, 0}, 50.0f), view,
+                              two_colours(), unlit()));
+        // Interpolated, so allow one step of 8-bit rounding (0.7 · 255 is exactly 178.5).
+        const Rgba8 expected = to_rgba8(colours[0]), actual = fb.colour(16, 16);
+        EXPECT_LE(std::abs(actual.r - expected.r), 1);
+        EXPECT_LE(std::abs(actual.g - expected.g), 1);
+        EXPECT_LE(std::abs(actual.b - expected.b), 1);
+    }
+}
+
+TEST(MeshRenderer, LambertShadingMatchesTheFormulaAndBackFacesUseTheFlippedNormal) {
+    // Light at 60° from the square's front normal: front pixels get
+    // base · (ambient + light · cos 60°); seen from behind, the flipped normal faces away
+    // from the light, leaving ambient only. Then light the back instead.
+    const Square square;
+    SurfaceStyle style = two_colours();
+    Lighting lighting;
+    lighting.ambient_colour = glm::vec3(0.2f);
+    lighting.light_colour = glm::vec3(0.6f);
+    lighting.eye_fill_colour = glm::vec3(0.0f);
+    lighting.direction_to_light = {std::sin(glm::radians(60.0f)), 0.0f,
+                                   std::cos(glm::radians(60.0f))};
+    Framebuffer fb(32, 32);
+    auto render_from = [&](float z) {
+        fb.clear(background);
+        EXPECT_TRUE(draw_mesh(fb, make_camera({0, 0, z}, {0, 0, 0}, 50.0f), square.view(), style,
+                              lighting));
+        return fb.colour(16, 16);
+    };
+    EXPECT_EQ(render_from(2.0f), to_rgba8(style.front_colour * (0.2f + 0.6f * 0.5f)));
+    EXPECT_EQ(render_from(-2.0f), to_rgba8(style.back_colour * 0.2f));
+    lighting.direction_to_light.z = -lighting.direction_to_light.z;
+    EXPECT_EQ(render_from(-2.0f), to_rgba8(style.back_colour * (0.2f + 0.6f * 0.5f)));
+    EXPECT_EQ(render_from(2.0f), to_rgba8(style.front_colour * 0.2f));
+}
+
+TEST(MeshRenderer, SpecularHighlightFollowsBlinnPhong) {
+    // Eye and light both along the normal: the halfway vector is the normal, the highlight
+    // is at full strength: base · (ambient + light) + light · strength.
+    SurfaceStyle style = two_colours();
+    style.specular_strength = 0.25f;
+    style.shininess = 16.0f;
+    Lighting lighting;
+    lighting.ambient_colour = glm::vec3(0.1f);
+    lighting.light_colour = glm::vec3(0.5f);
+    lighting.eye_fill_colour = glm::vec3(0.0f);
+    lighting.direction_to_light = {0, 0, 1};
+    const glm::vec3 lit =
+        shade_surface(style, lighting, style.front_colour, {0, 0, 1}, {0, 0, 1}, true);
+    const glm::vec3 expected = style.front_colour * 0.6f + glm::vec3(0.5f * 0.25f);
+    EXPECT_NEAR(lit.r, expected.r, 1e-6f);
+    EXPECT_NEAR(lit.g, expected.g, 1e-6f);
+    // Eye 60° off the normal, light on it: n·h = cos 30°.
+    const glm::vec3 to_eye(std::sin(glm::radians(60.0f)), 0.0f, std::cos(glm::radians(60.0f)));
+    const glm::vec3 off =
+        shade_surface(style, lighting, style.front_colour, {0, 0, 1}, to_eye, true);
+    const float highlight = 0.5f * 0.25f * std::pow(std::cos(glm::radians(30.0f)), 16.0f);
+    EXPECT_NEAR(off.b, style.front_colour.b * 0.6f + highlight, 1e-6f);
+}
+
+TEST(MeshRenderer, CheckerPatternAlternatesCellsFromTextureCoordinates) {
+    SurfaceStyle style;
+    style.pattern = SurfacePattern::checker;
+    style.pattern_frequency = 4.0f;
+    style.pattern_contrast = 0.5f;
+    EXPECT_EQ(pattern_factor(style, {0.1f, 0.1f}), 1.0f);
+    EXPECT_EQ(pattern_factor(style, {0.3f, 0.1f}), 0.5f);
+    EXPECT_EQ(pattern_factor(style, {0.3f, 0.3f}), 1.0f);
+    EXPECT_EQ(pattern_factor(style, {-0.1f, 0.1f}), 0.5f);
+    style.pattern = SurfacePattern::stripes;
+    EXPECT_EQ(pattern_factor(style, {0.3f, 0.3f}), 0.5f);
+    style.pattern = SurfacePattern::none;
+    EXPECT_EQ(pattern_factor(style, {0.3f, 0.1f}), 1.0f);
+
+    // Drawn: the square seen head-on shows a 2×2 checker with frequency 2.
+    const Square square;
+    SurfaceStyle drawn = two_colours();
+    drawn.pattern = SurfacePattern::checker;
+    drawn.pattern_frequency = 2.0f;
+    drawn.pattern_contrast = 0.5f;
+    Framebuffer fb(64, 64);
+    fb.clear(background);
+    ASSERT_TRUE(
+        draw_mesh(fb, make_camera({0, 0, 1.5f}, {0, 0, 0}, 50.0f), square.view(), drawn, unlit()));
+    const Rgba8 full = to_rgba8(drawn.front_colour), dark = to_rgba8(drawn.front_colour * 0.5f);
+    EXPECT_EQ(fb.colour(24, 40), full);  // u < 0.5, v < 0.5 (lower left)
+    EXPECT_EQ(fb.colour(40, 40), dark);
+    EXPECT_EQ(fb.colour(40, 24), full);
+    EXPECT_EQ(fb.colour(24, 24), dark);
+}
+
+TEST(MeshRenderer, RejectsMismatchedArraysAndSkipsBadIndices) {
+    Square square;
+    Framebuffer fb(16, 16);
+    fb.clear(background);
+    const Camera camera = make_camera({0, 0, 2}, {0, 0, 0}, 50.0f);
+    MeshView view = square.view();
+    view.normals = std::span<const glm::vec3>(square.normals).first(3);
+    EXPECT_FALSE(draw_mesh(fb, camera, view, two_colours(), unlit()));
+    EXPECT_EQ(fb.colour(8, 8), background);
+    const std::vector<TriangleIndices> bad{{0, 1, 4}, {0, 2, 3}};
+    view = square.view();
+    view.triangles = bad;
+    EXPECT_TRUE(draw_mesh(fb, camera, view, two_colours(), unlit()));
+    EXPECT_EQ(fb.colour(5, 5), to_rgba8(two_colours().front_colour));  // upper left: {0, 2, 3}
+    EXPECT_EQ(fb.colour(11, 11), background);                          // lower right: skipped
+}
+
+TEST(MeshRenderer, ScissorTilesReproduceTheWholeImage) {
+    const TriangleMesh sphere = make_uv_sphere(24, 12);
+    const Camera camera = make_camera({0.5f, 0.8f, 2.2f}, {0, 0, 0}, 50.0f);
+    SurfaceStyle style;
+    style.pattern = SurfacePattern::checker;
+    Framebuffer whole(70, 50), tiled(70, 50);
+    whole.clear(background);
+    tiled.clear(background);
+    ASSERT_TRUE(draw_mesh(whole, camera, sphere.view(), style, Lighting{}));
+    for (int y = 0; y < 50; y += 16) {
+        for (int x = 0; x < 70; x += 16) {
+            ASSERT_TRUE(draw_mesh(tiled, camera, sphere.view(), style, Lighting{},
+                                  PixelRect{x, y, x + 16, y + 16}));
+        }
+    }
+    EXPECT_TRUE(
+        std::equal(whole.colours().begin(), whole.colours().end(), tiled.colours().begin()));
+    EXPECT_TRUE(std::equal(whole.depths().begin(), whole.depths().end(), tiled.depths().begin()));
+}
+
+TEST(Sphere, SilhouetteMatchesTheAnalyticDiscAndNormalsPointOutwards) {
+    const int size = 96;
+    Framebuffer fb(size, size);
+    fb.clear(background);
+    const Camera camera = make_camera({0.0f, 0.0f, 4.0f}, {0.0f, 0.0f, 0.0f}, 40.0f);
+    const glm::vec3 centre(0.2f, -0.1f, 0.0f);
+    const float radius = 1.0f;
+    const TriangleMesh sphere = make_uv_sphere(96, 48);
+    SurfaceStyle style = two_colours();
+    ASSERT_TRUE(draw_sphere(fb, camera, sphere, centre, radius, style, unlit()));
+    // The tessellation is inscribed in the sphere: it may miss pixels whose centres are within
+    // a fraction of a pixel of the true silhouette, never anything else.
+    int covered = 0;
+    for (int y = 0; y < size; ++y) {
+        for (int x = 0; x < size; ++x) {
+            const auto ray = testing::reference_ray(
+                camera, size, size, static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+            const glm::vec3 to_centre = centre - ray.origin;
+            const float along = glm::dot(to_centre, ray.direction);
+            const float miss_distance =
+                std::sqrt(std::max(0.0f, glm::dot(to_centre, to_centre) - along * along));
+            const bool drawn = fb.colour(x, y) != background;
+            covered += drawn;
+            // One pixel at the sphere's distance is about 2·4·tan 20° / 96 ≈ 0.03 m.
+            if (miss_distance < radius - 0.03f) {
+                EXPECT_TRUE(drawn) << "pixel (" << x << ", " << y << ")";
+                // Outward normals, counter-clockwise from outside: the front colour shows.
+                EXPECT_EQ(fb.colour(x, y), to_rgba8(style.front_colour))
+                    << "pixel (" << x << ", " << y << ")";
+            } else if (miss_distance > radius) {
+                EXPECT_FALSE(drawn) << "pixel (" << x << ", " << y << ")";
+            }
+        }
+    }
+    EXPECT_GT(covered, 1500);
+    const TriangleMesh coarse = make_uv_sphere(8, 4);
+    for (std::size_t i = 0; i < coarse.positions.size(); ++i) {
+        EXPECT_NEAR(glm::length(coarse.positions[i]), 1.0f, 1e-6f);
+        EXPECT_EQ(coarse.normals[i], coarse.positions[i]);
+    }
+    EXPECT_EQ(coarse.triangles.size(), 8u * 4u * 2u - 2u * 8u);  // pole rows: one per cell
+}
+
+}  // namespace
+}  // namespace weft::raster

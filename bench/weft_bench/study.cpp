@@ -1,0 +1,79 @@
+#include "study.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <fstream>
+#include <functional>
+#include <thread>
+
+#include "sim/scene_loader.h"
+
+namespace weft::bench {
+
+std::atomic<bool> stop_requested{false};
+
+void install_stop_handler() {
+    std::signal(SIGINT, [](int) { stop_requested = true; });
+}
+
+std::optional<Scene> load_study_scene(const std::string& path, const std::vector<std::string>& overrides,
+                                      std::string& error) {
+    SceneLoadResult loaded = load_scene_file(path, overrides);
+    if (!loaded.ok()) {
+        error = loaded.error->message();
+        return std::nullopt;
+    }
+    if (auto why = Simulation::unsupported_feature(*loaded.scene)) {
+        error = "error: " + path + ": " + *why;
+        return std::nullopt;
+    }
+    return loaded.scene;
+}
+
+bool run_steps(Simulation& simulation, long long steps) {
+    for (long long s = 0; s < steps; ++s)
+        if (simulation.step().diverged()) return false;
+    return true;
+}
+
+double seconds_of(const std::function<void()>& work) {
+    const auto start = std::chrono::steady_clock::now();
+    work();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double median_seconds(int repeats, const std::function<void()>& work) {
+    std::vector<double> times;
+    for (int r = 0; r < repeats; ++r) times.push_back(seconds_of(work));
+    std::sort(times.begin(), times.end());
+    return times[times.size() / 2];
+}
+
+const char* short_name(Integrator integrator) { return integrator_name(integrator); }
+
+std::string machine_description() {
+    std::ifstream cpuinfo("/proc/cpuinfo");
+    std::string line, model = "unknown CPU";
+    while (std::getline(cpuinfo, line)) {
+        if (line.rfind("model name", 0) == 0) {
+            model = line.substr(line.find(':') + 2);
+            break;
+        }
+    }
+    return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " cores";
+}
+
+double fitted_log_slope(const std::vector<double>& xs, const std::vector<double>& ys) {
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    const auto n = static_cast<double>(xs.size());
+    for (std::size_t k = 0; k < xs.size(); ++k) {
+        const double x = std::log(xs[k]), y = std::log(ys[k]);
+        sx += x, sy += y, sxx += x * x, sxy += x * y;
+    }
+    const double denominator = n * sxx - sx * sx;
+    return denominator != 0.0 ? (n * sxy - sx * sy) / denominator : std::nan("");
+}
+
+}  // namespace weft::bench

@@ -1,0 +1,42 @@
+// What the studies share: loading their scenes, running a simulation for a stretch of
+// simulated time, timing it, and stopping cleanly on Ctrl-C.
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sim/scene.h"
+#include "sim/simulation.h"
+
+namespace weft::bench {
+
+// Set by SIGINT: studies finish the run in progress, write what they have, and return.
+extern std::atomic<bool> stop_requested;
+void install_stop_handler();
+
+// The scene at `path` with `overrides`, or an error message.
+std::optional<Scene> load_study_scene(const std::string& path, const std::vector<std::string>& overrides,
+                                      std::string& error);
+
+// Runs `steps` steps; nothing if the simulation diverged (or was stopped).
+bool run_steps(Simulation& simulation, long long steps);
+
+// Wall-clock seconds of a callable, and the median of `repeats` timings.
+double seconds_of(const std::function<void()>& work);
+double median_seconds(int repeats, const std::function<void()>& work);
+
+const char* short_name(Integrator integrator);
+inline constexpr Integrator explicit_integrators[] = {
+    Integrator::explicit_euler, Integrator::symplectic_euler, Integrator::verlet,
+    Integrator::velocity_verlet, Integrator::rk4};
+
+// "AMD EPYC, 2 cores": for the header of every report.
+std::string machine_description();
+
+// Least-squares slope of log y against log x: the observed order of convergence.
+double fitted_log_slope(const std::vector<double>& xs, const std::vector<double>& ys);
+
+}  // namespace weft::bench

@@ -21,7 +21,7 @@ namespace weft::raster {
 
 class Framebuffer {
   public:
-    static constexpr int max_side = 16384;    // per side; 16384² pixels take 1.25 GiB already
+    static constexpr int max_side = 16384;    // per side; 16384² pixels take 2 GiB already
     static constexpr float far_depth = 1.0f;  // the depth clear() writes unless told otherwise
 
     // Throws std::invalid_argument unless 1 <= width, height <= max_side.

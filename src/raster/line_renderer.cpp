@@ -162,13 +162,15 @@ void draw_clip_space_line(Framebuffer& framebuffer, const glm::vec4& a, const gl
     const WindowPoint p0 = to_window_point(end_a.position, end_a.colour, width, height);
     const WindowPoint p1 = to_window_point(end_b.position, end_b.colour, width, height);
 
-    // Clip to the scissor (plus a pixel of margin) in window space: a line reaching far
+    // Clip to the framebuffer (plus a pixel of margin) in window space: a line reaching far
     // off screen costs only its visible pixels. Depth, 1/w and colour/w are affine here.
+    // Deliberately not to the scissor: the clipped ends must not depend on the tile, or a
+    // line drawn tile by tile could round to other pixels at the seams than drawn whole;
+    // walk_line restricts the pixels to the scissor instead.
+    const float width_f = static_cast<float>(width), height_f = static_cast<float>(height);
     float t0 = 0.0f, t1 = 1.0f;
-    if (!clip_to_rect(
-            glm::vec2(p0.window), glm::vec2(p1.window), static_cast<float>(scissor.x_begin) - 1.0f,
-            static_cast<float>(scissor.y_begin) - 1.0f, static_cast<float>(scissor.x_end) + 1.0f,
-            static_cast<float>(scissor.y_end) + 1.0f, t0, t1)) {
+    if (!clip_to_rect(glm::vec2(p0.window), glm::vec2(p1.window), -1.0f, -1.0f, width_f + 1.0f,
+                      height_f + 1.0f, t0, t1)) {
         return;
     }
     const WindowPoint q0 = t0 > 0.0f ? lerp(p0, p1, t0) : p0;

@@ -192,9 +192,9 @@ float pattern_factor(const SurfaceStyle& style, const glm::vec2& uv) {
         return truncated - (static_cast<float>(truncated) > coordinate ? 1 : 0);
     };
     const std::int64_t cell_u = cell(uv.x * style.pattern_frequency);
-    const std::int64_t cells =
-        style.pattern == SurfacePattern::checker ? cell_u + cell(uv.y * style.pattern_frequency)
-                                                 : cell_u;
+    const std::int64_t cells = style.pattern == SurfacePattern::checker
+                                   ? cell_u + cell(uv.y * style.pattern_frequency)
+                                   : cell_u;
     return (cells & 1) != 0 ? 1.0f - style.pattern_contrast : 1.0f;
 }
 

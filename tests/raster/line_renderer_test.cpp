@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <set>
 #include <utility>
 #include <vector>
@@ -192,6 +194,41 @@ TEST(LineRenderer, ColoursBlendAlongTheLineAndIndexedLinesTakeOneColourEach) {
     EXPECT_GT(red, 10);
     EXPECT_GT(blue, 10);
     EXPECT_EQ(green, 0);
+}
+
+TEST(LineRenderer, ScissorTilesTogetherDrawExactlyWhatTheWholeFramebufferDraws) {
+    // Lines drawn tile by tile (as a threaded renderer will) must land on the same pixels as
+    // one untiled draw, including long lines running far off screen and behind the camera.
+    const int width = 61, height = 47;
+    const Camera camera = make_camera({0.3f, 0.6f, 1.2f}, {0.0f, 0.0f, 0.0f}, 60.0f);
+    std::vector<LineSegment> segments;
+    for (int i = 0; i < 40; ++i) {
+        const float a = 0.37f * static_cast<float>(i), b = 1.3f + 0.71f * static_cast<float>(i);
+        const Rgba8 colour{static_cast<std::uint8_t>(40 + 5 * i), 200,
+                           static_cast<std::uint8_t>(250 - 5 * i), 255};
+        segments.push_back({{std::cos(a) * 3.0f, std::sin(b) * 0.8f, std::sin(a) * 3.0f},
+                            {std::cos(b) * 0.5f, std::cos(a) * 2.0f, (i % 3 == 0 ? 6.0f : -0.7f)},
+                            colour,
+                            Rgba8{255, 40, 40, 255}});
+    }
+    Framebuffer whole(width, height), tiled(width, height);
+    whole.clear(background);
+    tiled.clear(background);
+    draw_lines(whole, camera, segments);
+    for (int y = 0; y < height; y += 16) {
+        for (int x = 0; x < width; x += 16) {
+            LineStyle style;
+            style.scissor = {x, y, x + 16, y + 16};
+            draw_lines(tiled, camera, segments, style);
+        }
+    }
+    EXPECT_GT(drawn_pixels(whole).size(), 300u);
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            ASSERT_EQ(whole.colour(x, y), tiled.colour(x, y)) << "pixel (" << x << ", " << y << ")";
+            ASSERT_EQ(whole.depth(x, y), tiled.depth(x, y)) << "pixel (" << x << ", " << y << ")";
+        }
+    }
 }
 
 TEST(PointRenderer, DrawsSquaresOfTheGivenSizeAndSkipsPointsBehindTheCamera) {

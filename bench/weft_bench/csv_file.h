@@ -9,7 +9,7 @@
 namespace weft::bench {
 
 class CsvFile {
-public:
+  public:
     CsvFile(const std::string& path, const std::vector<std::string>& header) {
         file_ = std::fopen(path.c_str(), "w");
         if (file_) write_row(header);
@@ -29,7 +29,7 @@ public:
         std::fflush(file_);
     }
 
-private:
+  private:
     std::FILE* file_ = nullptr;
 };
 

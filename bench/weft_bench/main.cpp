@@ -15,11 +15,12 @@ namespace {
 
 int usage(const char* problem) {
     if (problem) std::fprintf(stderr, "error: %s\n", problem);
-    std::fprintf(stderr,
-                 "usage:\n"
-                 "  weft-bench precision [SCENE.toml]... [--set K=V]... [--out DIR] [--repeats N]\n"
-                 "  weft-bench stability [SCENE.toml] [--sweep grid|mass|stiffness]... [--set K=V]...\n"
-                 "                       [--out DIR] [--duration SECONDS]\n");
+    std::fprintf(
+        stderr,
+        "usage:\n"
+        "  weft-bench precision [SCENE.toml]... [--set K=V]... [--out DIR] [--repeats N]\n"
+        "  weft-bench stability [SCENE.toml] [--sweep grid|mass|stiffness]... [--set K=V]...\n"
+        "                       [--out DIR] [--duration SECONDS]\n");
     return 2;
 }
 
@@ -36,19 +37,27 @@ int main(int argc, char** argv) {
     for (std::size_t a = 1; a < args.size(); ++a) {
         const std::string& arg = args[a];
         const bool has_value = a + 1 < args.size();
-        if (arg == "--set" && has_value) overrides.push_back(args[++a]);
-        else if (arg == "--out" && has_value) out_dir = args[++a];
-        else if (arg == "--sweep" && has_value) sweeps.push_back(args[++a]);
-        else if (arg == "--repeats" && has_value) repeats = std::max(1, std::atoi(args[++a].c_str()));
-        else if (arg == "--duration" && has_value) duration = std::atof(args[++a].c_str());
-        else if (arg.rfind("--", 0) == 0) return usage(("unknown or incomplete option " + arg).c_str());
-        else scenes.push_back(arg);
+        if (arg == "--set" && has_value)
+            overrides.push_back(args[++a]);
+        else if (arg == "--out" && has_value)
+            out_dir = args[++a];
+        else if (arg == "--sweep" && has_value)
+            sweeps.push_back(args[++a]);
+        else if (arg == "--repeats" && has_value)
+            repeats = std::max(1, std::atoi(args[++a].c_str()));
+        else if (arg == "--duration" && has_value)
+            duration = std::atof(args[++a].c_str());
+        else if (arg.rfind("--", 0) == 0)
+            return usage(("unknown or incomplete option " + arg).c_str());
+        else
+            scenes.push_back(arg);
     }
     if (!(duration > 0.0)) return usage("--duration must be > 0");
     weft::bench::install_stop_handler();
     const std::string scenes_dir = WEFT_SCENES_DIR;
     if (study == "precision") {
-        if (scenes.empty()) scenes = {scenes_dir + "/hanging_sheet.toml", scenes_dir + "/stiff_sheet.toml"};
+        if (scenes.empty())
+            scenes = {scenes_dir + "/hanging_sheet.toml", scenes_dir + "/stiff_sheet.toml"};
         return weft::bench::run_precision_study({scenes, overrides, out_dir, repeats});
     }
     if (study == "stability") {

@@ -32,7 +32,8 @@ void fill_rect(raster::Framebuffer& fb, int x0, int y0, int x1, int y1, raster::
         for (int x = std::max(0, x0); x < std::min(fb.width(), x1); ++x) fb.colour(x, y) = colour;
 }
 
-void draw_text(raster::Framebuffer& fb, int x, int y, const std::string& text, raster::Rgba8 colour) {
+void draw_text(raster::Framebuffer& fb, int x, int y, const std::string& text,
+               raster::Rgba8 colour) {
     static char buffer[200000];
     std::string copy = text;
     const int quads = stb_easy_font_print(0.0f, 0.0f, copy.data(), nullptr, buffer, sizeof buffer);
@@ -40,8 +41,9 @@ void draw_text(raster::Framebuffer& fb, int x, int y, const std::string& text, r
         const float* v = reinterpret_cast<const float*>(buffer + q * 4 * 16);
         // Each quad is an axis-aligned rectangle: corners 0 and 2 are opposite.
         const float* c = reinterpret_cast<const float*>(buffer + q * 4 * 16 + 2 * 16);
-        fill_rect(fb, x + static_cast<int>(v[0] * text_scale), y + static_cast<int>(v[1] * text_scale),
-                  x + static_cast<int>(c[0] * text_scale), y + static_cast<int>(c[1] * text_scale), colour);
+        fill_rect(fb, x + static_cast<int>(v[0] * text_scale),
+                  y + static_cast<int>(v[1] * text_scale), x + static_cast<int>(c[0] * text_scale),
+                  y + static_cast<int>(c[1] * text_scale), colour);
     }
 }
 
@@ -60,7 +62,8 @@ void draw_line(raster::Framebuffer& fb, double x0, double y0, double x1, double 
         const double t = count > 1 ? static_cast<double>(s) / (count - 1) : 0.0;
         const int x = static_cast<int>(std::lround(x0 + t * (x1 - x0)));
         const int y = static_cast<int>(std::lround(y0 + t * (y1 - y0)));
-        fill_rect(fb, x - width / 2, y - width / 2, x - width / 2 + width, y - width / 2 + width, colour);
+        fill_rect(fb, x - width / 2, y - width / 2, x - width / 2 + width, y - width / 2 + width,
+                  colour);
     }
 }
 
@@ -75,19 +78,23 @@ std::string tick_label(double value) {
 std::vector<double> ticks(const Axis& axis) {
     std::vector<double> result;
     if (axis.log) {
-        for (double decade = std::pow(10.0, std::floor(std::log10(axis.min))); decade <= axis.max * 1.0001;
-             decade *= 10.0) {
+        for (double decade = std::pow(10.0, std::floor(std::log10(axis.min)));
+             decade <= axis.max * 1.0001; decade *= 10.0) {
             for (double m : {1.0, 2.0, 5.0}) {
                 const double v = decade * m;
                 const bool fine = axis.max / axis.min < 30.0;
-                if ((m == 1.0 || fine) && v >= axis.min * 0.9999 && v <= axis.max * 1.0001) result.push_back(v);
+                if ((m == 1.0 || fine) && v >= axis.min * 0.9999 && v <= axis.max * 1.0001)
+                    result.push_back(v);
             }
         }
     } else {
         const double raw = (axis.max - axis.min) / 6.0;
         const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
-        const double step = raw / magnitude < 2 ? 2 * magnitude : raw / magnitude < 5 ? 5 * magnitude : 10 * magnitude;
-        for (double v = std::ceil(axis.min / step) * step; v <= axis.max + 1e-12 * step; v += step) result.push_back(v);
+        const double step = raw / magnitude < 2   ? 2 * magnitude
+                            : raw / magnitude < 5 ? 5 * magnitude
+                                                  : 10 * magnitude;
+        for (double v = std::ceil(axis.min / step) * step; v <= axis.max + 1e-12 * step; v += step)
+            result.push_back(v);
     }
     return result;
 }
@@ -117,9 +124,9 @@ void fit_range(Axis& axis, const std::vector<double>& values) {
 }  // namespace
 
 raster::Rgba8 series_colour(int index) {
-    static const raster::Rgba8 palette[] = {{214, 39, 40, 255},  {31, 119, 180, 255}, {44, 160, 44, 255},
-                                            {148, 103, 189, 255}, {255, 127, 14, 255}, {140, 86, 75, 255},
-                                            {23, 190, 207, 255},  {127, 127, 127, 255}};
+    static const raster::Rgba8 palette[] = {
+        {214, 39, 40, 255},  {31, 119, 180, 255}, {44, 160, 44, 255},  {148, 103, 189, 255},
+        {255, 127, 14, 255}, {140, 86, 75, 255},  {23, 190, 207, 255}, {127, 127, 127, 255}};
     return palette[index % 8];
 }
 
@@ -152,7 +159,8 @@ bool write_plot_png(const PlotSpec& spec, const std::string& path, std::string* 
     draw_line(fb, left, bottom, right, bottom, black, false, 1);
     draw_line(fb, left, top, left, bottom, black, false, 1);
     draw_text(fb, left, 10, spec.title, black);
-    draw_text(fb, (left + right) / 2 - text_width(spec.x_label) / 2, spec.height - 34, spec.x_label, black);
+    draw_text(fb, (left + right) / 2 - text_width(spec.x_label) / 2, spec.height - 34, spec.x_label,
+              black);
     draw_text(fb, 8, top - 32, spec.y_label, black);
 
     int legend_y = top;
@@ -167,11 +175,12 @@ bool write_plot_png(const PlotSpec& spec, const std::string& path, std::string* 
             const double x = x_axis.map(p.x), y = y_axis.map(p.y);
             if (have_previous) draw_line(fb, px, py, x, y, series.colour, series.dashed);
             if (series.markers)
-                fill_rect(fb, static_cast<int>(x) - 4, static_cast<int>(y) - 4, static_cast<int>(x) + 5,
-                          static_cast<int>(y) + 5, series.colour);
+                fill_rect(fb, static_cast<int>(x) - 4, static_cast<int>(y) - 4,
+                          static_cast<int>(x) + 5, static_cast<int>(y) + 5, series.colour);
             px = x, py = y, have_previous = true;
         }
-        draw_line(fb, right + 20, legend_y + 7, right + 50, legend_y + 7, series.colour, series.dashed);
+        draw_line(fb, right + 20, legend_y + 7, right + 50, legend_y + 7, series.colour,
+                  series.dashed);
         draw_text(fb, right + 58, legend_y, series.label, black);
         legend_y += 22;
     }

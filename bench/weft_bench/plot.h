@@ -17,8 +17,9 @@ struct PlotPoint {
 struct PlotSeries {
     std::string label;
     raster::Rgba8 colour;
-    std::vector<PlotPoint> points;  // drawn in order; non-finite or non-positive (on a log axis) skipped
-    bool dashed = false;            // e.g. a prediction beside a measurement
+    std::vector<PlotPoint>
+        points;           // drawn in order; non-finite or non-positive (on a log axis) skipped
+    bool dashed = false;  // e.g. a prediction beside a measurement
     bool markers = true;
 };
 

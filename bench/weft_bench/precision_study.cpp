@@ -87,20 +87,25 @@ int run_precision_study(const PrecisionOptions& options) {
         const double base_dt = scene->solver.dt;
         const double sample_interval = steps_per_sample_at_base * base_dt;
         std::printf("\n%s: %d x %d particles, T = %g s, error sampled every %g s\n", tag.c_str(),
-                    scene->cloth.rows, scene->cloth.cols, sample_count * sample_interval, sample_interval);
+                    scene->cloth.rows, scene->cloth.cols, sample_count * sample_interval,
+                    sample_interval);
 
         // The reference, and proof that it has converged: two RK4 runs a factor 2 apart.
         std::printf("  reference: rk4 at dt = %g s and %g s ...\n", base_dt * reference_factor,
                     base_dt * reference_factor / 2);
         std::fflush(stdout);
-        const Trajectory reference = simulate(*scene, Integrator::rk4, base_dt * reference_factor, sample_interval);
-        const Trajectory check = simulate(*scene, Integrator::rk4, base_dt * reference_factor / 2, sample_interval);
+        const Trajectory reference =
+            simulate(*scene, Integrator::rk4, base_dt * reference_factor, sample_interval);
+        const Trajectory check =
+            simulate(*scene, Integrator::rk4, base_dt * reference_factor / 2, sample_interval);
         const double reference_agreement = errors_between(reference, check).max;
-        std::printf("  reference agreement (max over particles and times): %.3g m\n", reference_agreement);
+        std::printf("  reference agreement (max over particles and times): %.3g m\n",
+                    reference_agreement);
 
-        PlotSpec work{"Work-precision: " + scene->name + " (" + tag + ")",
-                      "CPU seconds per simulated second (median of " + std::to_string(options.repeats) + ")",
-                      "RMS position error, max over 4 times (m)"};
+        PlotSpec work{
+            "Work-precision: " + scene->name + " (" + tag + ")",
+            "CPU seconds per simulated second (median of " + std::to_string(options.repeats) + ")",
+            "RMS position error, max over 4 times (m)"};
         PlotSpec order{"Error against dt: " + scene->name + " (" + tag + ")", "dt (s)",
                        "RMS position error, max over 4 times (m)"};
         int colour = 0;
@@ -118,14 +123,16 @@ int run_precision_study(const PrecisionOptions& options) {
                 std::printf("  %-17s dt = %-10g ", integrator_name(integrator), dt);
                 std::fflush(stdout);
                 Trajectory run;
-                const double first = seconds_of([&] { run = simulate(*scene, integrator, dt, sample_interval); });
+                const double first =
+                    seconds_of([&] { run = simulate(*scene, integrator, dt, sample_interval); });
                 const double seconds =
                     run.diverged ? first
                                  : std::min(first, median_seconds(options.repeats - 1, [&] {
-                                       simulate(*scene, integrator, dt, sample_interval);
-                                   }));
+                                                simulate(*scene, integrator, dt, sample_interval);
+                                            }));
                 const double per_simulated_second = seconds / (sample_count * sample_interval);
-                const Errors errors = run.diverged ? Errors{NAN, NAN} : errors_between(run, reference);
+                const Errors errors =
+                    run.diverged ? Errors{NAN, NAN} : errors_between(run, reference);
                 const double evaluations =
                     static_cast<double>(steps) * force_evaluations_per_step(integrator);
                 csv.write_row({tag, integrator_name(integrator), cell(dt), std::to_string(steps),
@@ -138,19 +145,22 @@ int run_precision_study(const PrecisionOptions& options) {
                     diverged_steps += (diverged_steps.empty() ? "" : " ") + cell(dt);
                     continue;
                 }
-                std::printf("rms %.3e m  max %.3e m  %.3g s/s\n", errors.rms, errors.max, per_simulated_second);
+                std::printf("rms %.3e m  max %.3e m  %.3g s/s\n", errors.rms, errors.max,
+                            per_simulated_second);
                 work_series.points.push_back({per_simulated_second, errors.rms});
                 order_series.points.push_back({dt, errors.rms});
                 // Fit the order only where the error stands well above the reference's own.
-                if (errors.max > 100.0 * reference_agreement) fit_dt.push_back(dt), fit_error.push_back(errors.rms);
+                if (errors.max > 100.0 * reference_agreement)
+                    fit_dt.push_back(dt), fit_error.push_back(errors.rms);
             }
             if (fit_dt.size() >= 2) {
                 const double fitted = fitted_log_slope(fit_dt, fit_error);
                 char label[80];
-                std::snprintf(label, sizeof label, "%s (order %.2f)", integrator_name(integrator), fitted);
+                std::snprintf(label, sizeof label, "%s (order %.2f)", integrator_name(integrator),
+                              fitted);
                 order_series.label = label;
-                std::printf("  %-17s fitted order %.2f over %zu points\n", integrator_name(integrator), fitted,
-                            fit_dt.size());
+                std::printf("  %-17s fitted order %.2f over %zu points\n",
+                            integrator_name(integrator), fitted, fit_dt.size());
             }
             if (!diverged_steps.empty()) {
                 work.notes.push_back(std::string(integrator_name(integrator)) + " diverged at dt:");

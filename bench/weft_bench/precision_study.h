@@ -12,7 +12,7 @@ struct PrecisionOptions {
     std::vector<std::string> scenes;     // scene files; each gets its own plots
     std::vector<std::string> overrides;  // --set, applied to every scene
     std::string out_dir = ".";
-    int repeats = 3;                     // timings: the median of this many runs
+    int repeats = 3;  // timings: the median of this many runs
 };
 
 int run_precision_study(const PrecisionOptions& options);

@@ -32,7 +32,8 @@ std::vector<SweepPoint> sweep_points(const std::string& sweep, const Scene& base
         for (int n : {10, 15, 20, 27, 32, 48, 64}) {
             Scene scene = base;
             scene.cloth.rows = scene.cloth.cols = n;
-            points.push_back({std::to_string(n) + "x" + std::to_string(n), static_cast<double>(n), scene});
+            points.push_back(
+                {std::to_string(n) + "x" + std::to_string(n), static_cast<double>(n), scene});
         }
     } else if (sweep == "mass") {
         for (double mass : {0.001, 0.003, 0.01, 0.03, 0.1}) {
@@ -81,14 +82,15 @@ RunResult run_is_stable(const Scene& scene, Integrator integrator, double dt, do
     const double weight = static_cast<double>(cloth.particle_count()) * scene.cloth.particle_mass *
                           glm::length(simulation.force_field().gravity);
     const double size = std::max(scene.cloth.rows, scene.cloth.cols) * scene.cloth.spacing;
-    const double energy_bound =
-        std::abs(measure_energy(cloth, simulation.force_field()).total()) + 10.0 * weight * size + 1e-9;
+    const double energy_bound = std::abs(measure_energy(cloth, simulation.force_field()).total()) +
+                                10.0 * weight * size + 1e-9;
     const long long steps = std::llround(duration / dt);
     bool stable = true;
     const double seconds = seconds_of([&] {
         for (long long s = 0; s < steps && stable; ++s) {
             if (simulation.step().diverged()) stable = false;
-            if (s % 64 == 63 && measure_energy(simulation.cloth(), simulation.force_field()).total() > energy_bound)
+            if (s % 64 == 63 &&
+                measure_energy(simulation.cloth(), simulation.force_field()).total() > energy_bound)
                 stable = false;
         }
     });
@@ -96,9 +98,9 @@ RunResult run_is_stable(const Scene& scene, Integrator integrator, double dt, do
 }
 
 struct Limit {
-    double dt = NAN;               // s, largest stable step found (NaN: none in range)
+    double dt = NAN;                            // s, largest stable step found (NaN: none in range)
     double seconds_per_simulated_second = NAN;  // cost of running at that step
-    std::string note;              // why a limit is missing
+    std::string note;                           // why a limit is missing
 };
 
 // Bisection on dt between a stable and an unstable step, to 1 % (geometric midpoints).
@@ -133,7 +135,8 @@ Limit measure_limit(const Scene& scene, Integrator integrator, double guess, dou
         }
     }
     limit.dt = stable;
-    limit.seconds_per_simulated_second = run_is_stable(scene, integrator, stable, duration).seconds / duration;
+    limit.seconds_per_simulated_second =
+        run_is_stable(scene, integrator, stable, duration).seconds / duration;
     return limit;
 }
 
@@ -151,25 +154,34 @@ int run_stability_study(const StabilityOptions& options) {
                 machine_description().c_str(), options.scene.c_str(), options.duration);
     for (const std::string& sweep : options.sweeps) {
         const std::string csv_path = options.out_dir + "/stability_" + sweep + ".csv";
-        CsvFile csv(csv_path, {"sweep", "point", "value", "integrator", "damping", "omega_max_rad_s",
-                               "predicted_dt_s", "measured_dt_s", "measured_over_predicted",
-                               "seconds_per_simulated_second_at_limit", "note"});
+        CsvFile csv(csv_path,
+                    {"sweep", "point", "value", "integrator", "damping", "omega_max_rad_s",
+                     "predicted_dt_s", "measured_dt_s", "measured_over_predicted",
+                     "seconds_per_simulated_second_at_limit", "note"});
         if (!csv.is_open()) {
             std::fprintf(stderr, "error: %s: cannot write\n", csv_path.c_str());
             return 2;
         }
         const std::vector<SweepPoint> points = sweep_points(sweep, *base);
         if (points.empty()) {
-            std::fprintf(stderr, "error: --sweep: unknown sweep '%s' (grid, mass or stiffness)\n", sweep.c_str());
+            std::fprintf(stderr, "error: --sweep: unknown sweep '%s' (grid, mass or stiffness)\n",
+                         sweep.c_str());
             return 2;
         }
-        PlotSpec plot{"Largest stable dt against " + sweep + " (" + std::filesystem::path(options.scene).stem().string() + ")",
-                      sweep == "grid" ? "particles per side" : sweep == "mass" ? "particle mass (kg)" : "structural stiffness (N/m)",
+        PlotSpec plot{"Largest stable dt against " + sweep + " (" +
+                          std::filesystem::path(options.scene).stem().string() + ")",
+                      sweep == "grid"   ? "particles per side"
+                      : sweep == "mass" ? "particle mass (kg)"
+                                        : "structural stiffness (N/m)",
                       "dt (s): measured (solid), predicted 2/w or 2.83/w (dashed)"};
         int colour = 0;
         for (Integrator integrator : explicit_integrators) {
             PlotSeries measured{std::string(integrator_name(integrator)), series_colour(colour)};
-            PlotSeries predicted{std::string(integrator_name(integrator)) + " predicted", series_colour(colour), {}, true, false};
+            PlotSeries predicted{std::string(integrator_name(integrator)) + " predicted",
+                                 series_colour(colour),
+                                 {},
+                                 true,
+                                 false};
             ++colour;
             // Explicit Euler has no stable step without damping; it is measured with the scene's.
             const bool damped = integrator == Integrator::explicit_euler;
@@ -178,14 +190,17 @@ int run_stability_study(const StabilityOptions& options) {
                 const Scene scene = damped ? point.scene : without_damping(point.scene);
                 const double omega = highest_angular_frequency(build_grid_cloth(scene));
                 const double predicted_dt = stable_step_limit(integrator, omega);
-                std::printf("  %-9s %-12s %-17s w_max %8.1f rad/s  predicted %-10.4g ", sweep.c_str(),
-                            point.label.c_str(), integrator_name(integrator), omega, predicted_dt);
+                std::printf("  %-9s %-12s %-17s w_max %8.1f rad/s  predicted %-10.4g ",
+                            sweep.c_str(), point.label.c_str(), integrator_name(integrator), omega,
+                            predicted_dt);
                 std::fflush(stdout);
-                const double guess = damped ? stable_step_limit(Integrator::symplectic_euler, omega) : predicted_dt;
+                const double guess =
+                    damped ? stable_step_limit(Integrator::symplectic_euler, omega) : predicted_dt;
                 const Limit limit = measure_limit(scene, integrator, guess, options.duration);
                 std::printf("measured %-10.4g %s\n", limit.dt, limit.note.c_str());
                 csv.write_row({sweep, point.label, cell(point.value), integrator_name(integrator),
-                               damped ? "scene" : "none", cell(omega), cell(predicted_dt), cell(limit.dt),
+                               damped ? "scene" : "none", cell(omega), cell(predicted_dt),
+                               cell(limit.dt),
                                cell(predicted_dt > 0 ? limit.dt / predicted_dt : NAN),
                                cell(limit.seconds_per_simulated_second), limit.note});
                 measured.points.push_back({point.value, limit.dt});
@@ -196,7 +211,8 @@ int run_stability_study(const StabilityOptions& options) {
         }
         plot.notes = {"undamped; explicit-euler", "with the scene's damping"};
         const std::string path = options.out_dir + "/stability_" + sweep + ".png";
-        if (!write_plot_png(plot, path, &error)) std::fprintf(stderr, "error: %s: %s\n", path.c_str(), error.c_str());
+        if (!write_plot_png(plot, path, &error))
+            std::fprintf(stderr, "error: %s: %s\n", path.c_str(), error.c_str());
         std::printf("wrote %s and %s\n", csv_path.c_str(), path.c_str());
         if (stop_requested) return 130;
     }

@@ -9,11 +9,11 @@
 namespace weft::bench {
 
 struct StabilityOptions {
-    std::string scene;                   // the base sheet
+    std::string scene;  // the base sheet
     std::vector<std::string> overrides;
-    std::vector<std::string> sweeps;     // "grid", "mass", "stiffness"
+    std::vector<std::string> sweeps;  // "grid", "mass", "stiffness"
     std::string out_dir = ".";
-    double duration = 0.5;               // s of simulated time a step must survive
+    double duration = 0.5;  // s of simulated time a step must survive
 };
 
 int run_stability_study(const StabilityOptions& options);

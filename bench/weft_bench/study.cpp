@@ -18,7 +18,8 @@ void install_stop_handler() {
     std::signal(SIGINT, [](int) { stop_requested = true; });
 }
 
-std::optional<Scene> load_study_scene(const std::string& path, const std::vector<std::string>& overrides,
+std::optional<Scene> load_study_scene(const std::string& path,
+                                      const std::vector<std::string>& overrides,
                                       std::string& error) {
     SceneLoadResult loaded = load_scene_file(path, overrides);
     if (!loaded.ok()) {
@@ -51,7 +52,9 @@ double median_seconds(int repeats, const std::function<void()>& work) {
     return times[times.size() / 2];
 }
 
-const char* short_name(Integrator integrator) { return integrator_name(integrator); }
+const char* short_name(Integrator integrator) {
+    return integrator_name(integrator);
+}
 
 std::string machine_description() {
     std::ifstream cpuinfo("/proc/cpuinfo");

@@ -18,7 +18,8 @@ extern std::atomic<bool> stop_requested;
 void install_stop_handler();
 
 // The scene at `path` with `overrides`, or an error message.
-std::optional<Scene> load_study_scene(const std::string& path, const std::vector<std::string>& overrides,
+std::optional<Scene> load_study_scene(const std::string& path,
+                                      const std::vector<std::string>& overrides,
                                       std::string& error);
 
 // Runs `steps` steps; nothing if the simulation diverged (or was stopped).

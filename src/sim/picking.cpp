@@ -29,8 +29,10 @@ std::optional<RayHit> cast_ray(const Cloth& cloth, const Vec3& origin, const Vec
         nearest_distance = distance;
         // Barycentric weights (1 - u - v, u, v): the largest marks the nearest corner.
         const double w = 1.0 - u - v;
-        const std::uint32_t corner = (w >= u && w >= v) ? triangle.a : (u >= v ? triangle.b : triangle.c);
-        nearest = RayHit{static_cast<std::uint32_t>(t), corner, distance, origin + distance * direction};
+        const std::uint32_t corner =
+            (w >= u && w >= v) ? triangle.a : (u >= v ? triangle.b : triangle.c);
+        nearest =
+            RayHit{static_cast<std::uint32_t>(t), corner, distance, origin + distance * direction};
     }
     return nearest;
 }

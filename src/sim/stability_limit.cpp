@@ -32,7 +32,8 @@ void apply_stiffness(const Cloth& cloth, const std::vector<Vec3>& x, std::vector
 
 }  // namespace
 
-double highest_angular_frequency(const Cloth& cloth, int max_iterations, double relative_tolerance) {
+double highest_angular_frequency(const Cloth& cloth, int max_iterations,
+                                 double relative_tolerance) {
     const std::size_t count = cloth.particle_count();
     // Work in mass-weighted coordinates z = M^{1/2} x so the operator is symmetric; pinned
     // particles are held at zero (their rows and columns are removed).
@@ -41,8 +42,7 @@ double highest_angular_frequency(const Cloth& cloth, int max_iterations, double 
         inverse_sqrt_mass[p] = cloth.is_pinned(p) ? 0.0 : 1.0 / std::sqrt(cloth.masses[p]);
     std::vector<Vec3> z(count), x(count), y(count);
     // A fixed, deterministic start with a component along every mode of a grid.
-    for (std::size_t p = 0; p < count; ++p)
-    {
+    for (std::size_t p = 0; p < count; ++p) {
         const auto phase = static_cast<double>(p);
         z[p] = Vec3(std::sin(1.0 + 0.731 * phase), std::cos(2.0 + 1.213 * phase),
                     std::sin(3.0 + 0.377 * phase)) *
@@ -66,7 +66,8 @@ double highest_angular_frequency(const Cloth& cloth, int max_iterations, double 
             z[p] = y[p] * inverse_sqrt_mass[p];
             rayleigh += glm::dot(unit[p], z[p]);
         }
-        const bool converged = iteration > 10 && std::abs(rayleigh - estimate) <= relative_tolerance * rayleigh;
+        const bool converged =
+            iteration > 10 && std::abs(rayleigh - estimate) <= relative_tolerance * rayleigh;
         estimate = rayleigh;
         if (converged) break;
     }
@@ -87,15 +88,54 @@ double angular_frequency_bound(const Cloth& cloth) {
     return std::sqrt(bound);
 }
 
+double damping_rate_bound(const Cloth& cloth, double air_drag) {
+    std::vector<double> damping_sum(cloth.particle_count(), 0.0);
+    for (const SpringGroup& group : cloth.spring_groups) {
+        for (const Spring& spring : group.springs) {
+            damping_sum[spring.i] += group.damping;
+            damping_sum[spring.j] += group.damping;
+        }
+    }
+    double bound = 0.0;
+    for (std::size_t p = 0; p < cloth.particle_count(); ++p)
+        if (!cloth.is_pinned(p))
+            bound = std::max(bound, (2.0 * damping_sum[p] + air_drag) / cloth.masses[p]);
+    return bound;
+}
+
+double estimated_step_limit(const Cloth& cloth, double air_drag, Integrator integrator) {
+    const double omega = angular_frequency_bound(cloth);
+    const double damping = damping_rate_bound(cloth, air_drag);
+    const double symplectic_limit =
+        4.0 / (damping + std::sqrt(damping * damping + 4.0 * omega * omega));
+    switch (integrator) {
+        case Integrator::symplectic_euler:
+        case Integrator::verlet:
+        case Integrator::velocity_verlet:
+            return symplectic_limit;
+        case Integrator::rk4:
+            return std::sqrt(2.0) * symplectic_limit;
+        case Integrator::explicit_euler:
+            return 0.0;
+        case Integrator::implicit_euler:
+            return std::numeric_limits<double>::infinity();
+    }
+    return 0.0;
+}
+
 double stable_step_limit(Integrator integrator, double omega_max) {
     if (omega_max <= 0.0) return std::numeric_limits<double>::infinity();
     switch (integrator) {
         case Integrator::symplectic_euler:
         case Integrator::verlet:
-        case Integrator::velocity_verlet: return 2.0 / omega_max;
-        case Integrator::rk4: return 2.0 * std::sqrt(2.0) / omega_max;
-        case Integrator::explicit_euler: return 0.0;
-        case Integrator::implicit_euler: return std::numeric_limits<double>::infinity();
+        case Integrator::velocity_verlet:
+            return 2.0 / omega_max;
+        case Integrator::rk4:
+            return 2.0 * std::sqrt(2.0) / omega_max;
+        case Integrator::explicit_euler:
+            return 0.0;
+        case Integrator::implicit_euler:
+            return std::numeric_limits<double>::infinity();
     }
     return 0.0;
 }

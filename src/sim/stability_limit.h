@@ -23,6 +23,16 @@ double highest_angular_frequency(const Cloth& cloth, int max_iterations = 5000,
 // at rest length): ω²_max <= max over particles i of 2 Σ_j k_ij / m_i.
 double angular_frequency_bound(const Cloth& cloth);
 
+// A cheap upper bound for the damping rate (1/s) of the fastest-decaying mode, by Gershgorin
+// on M⁻¹C: max over particles i of (2 Σ_j c_ij + air_drag) / m_i.
+double damping_rate_bound(const Cloth& cloth, double air_drag);
+
+// The demo's per-frame step-limit estimate, conservative: damping narrows the stable range
+// of the methods that treat it explicitly. For symplectic Euler on x'' + c x' + ω² x = 0 the
+// step must satisfy h²ω² + 2hc < 4, i.e. h < 4 / (c + √(c² + 4ω²)); the Verlets share the
+// bound and RK4's interval is taken √2 times longer. Explicit Euler: 0 (no guaranteed step).
+double estimated_step_limit(const Cloth& cloth, double air_drag, Integrator integrator);
+
 // The largest h with h·ω_max inside the method's stability interval; 0 for explicit Euler,
 // which has no stable step without damping; infinity for implicit Euler.
 double stable_step_limit(Integrator integrator, double omega_max);

@@ -13,7 +13,8 @@ namespace weft {
 
 // The key of the undirected edge (a, b).
 inline std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
-    return a < b ? (static_cast<std::uint64_t>(a) << 32) | b : (static_cast<std::uint64_t>(b) << 32) | a;
+    return a < b ? (static_cast<std::uint64_t>(a) << 32) | b
+                 : (static_cast<std::uint64_t>(b) << 32) | a;
 }
 
 // Removes every triangle one of whose edges is in `removed_edges` (keys from edge_key; the

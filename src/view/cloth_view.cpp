@@ -36,7 +36,8 @@ void ClothView::rebuild_topology(const Cloth& cloth) {
 void ClothView::update(const Cloth& cloth) {
     if (cloth.spring_count() != spring_count_ || cloth.triangles.size() != triangle_count_)
         rebuild_topology(cloth);
-    for (std::size_t p = 0; p < positions_.size(); ++p) positions_[p] = glm::vec3(cloth.positions[p]);
+    for (std::size_t p = 0; p < positions_.size(); ++p)
+        positions_[p] = glm::vec3(cloth.positions[p]);
     raster::compute_vertex_normals(positions_, intact_triangles_, normals_);
 }
 
@@ -56,7 +57,8 @@ std::span<const raster::Rgba8> ClothView::spring_colours(const Cloth& cloth) {
     std::size_t line = 0;
     for (const SpringGroup& group : cloth.spring_groups) {
         for (const Spring& spring : group.springs) {
-            const double length = glm::length(cloth.positions[spring.j] - cloth.positions[spring.i]);
+            const double length =
+                glm::length(cloth.positions[spring.j] - cloth.positions[spring.i]);
             const auto strain = static_cast<float>(length / spring.rest_length - 1.0);
             largest_strain_ = std::max(largest_strain_, strain);
             spring_line_colours_[line++] = raster::to_rgba8(raster::colour_for_strain(strain));

@@ -14,7 +14,7 @@
 namespace weft::view {
 
 class ClothView {
-public:
+  public:
     explicit ClothView(const Cloth& cloth);
 
     // Copies positions, recomputes normals and, when springs were torn or cut since the last
@@ -38,7 +38,7 @@ public:
     // Largest strain (|d|/L - 1) over all live springs at the last spring_colours() call.
     float largest_strain() const { return largest_strain_; }
 
-private:
+  private:
     void rebuild_topology(const Cloth& cloth);
 
     std::vector<glm::vec3> positions_;

@@ -17,7 +17,8 @@ raster::SurfaceStyle FrameOptions::default_surface() {
 
 raster::Camera scene_camera(const Scene& scene) {
     auto to_vec3 = [](const Vec3d& v) {
-        return glm::vec3(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
+        return glm::vec3(static_cast<float>(v[0]), static_cast<float>(v[1]),
+                         static_cast<float>(v[2]));
     };
     return raster::make_camera(to_vec3(scene.camera.position), to_vec3(scene.camera.target),
                                static_cast<float>(scene.camera.fov_degrees));
@@ -29,7 +30,8 @@ float ground_height_below(const Cloth& cloth) {
     double lowest = 0.0;
     for (const Vec3& x : cloth.positions) lowest = std::min(lowest, x.y);
     const double cloth_length = std::max(cloth.rows, cloth.cols) * cloth.spacing;
-    for (std::uint32_t p : cloth.pinned) lowest = std::min(lowest, cloth.positions[p].y - cloth_length);
+    for (std::uint32_t p : cloth.pinned)
+        lowest = std::min(lowest, cloth.positions[p].y - cloth_length);
     return static_cast<float>(lowest) - 0.1f;  // m
 }
 
@@ -60,7 +62,8 @@ void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera
         raster::draw_indexed_lines(framebuffer, camera, view.positions(), view.spring_lines(),
                                    view.spring_colours(cloth));
     if (options.particles)
-        raster::draw_points(framebuffer, camera, view.positions(), view.particle_colours(cloth), 4.0f);
+        raster::draw_points(framebuffer, camera, view.positions(), view.particle_colours(cloth),
+                            4.0f);
 }
 
 }  // namespace weft::view

@@ -38,6 +38,24 @@ TEST(StabilityLimit, PowerIterationFindsTheChainsHighestMode) {
     EXPECT_GE(angular_frequency_bound(chain), exact);
 }
 
+TEST(StabilityLimit, TheDampedEstimateIsTheExactBoundForOneDampedSpring) {
+    // One free particle on one spring: ω² = k/m and c = (damping + air_drag)/m exactly, and
+    // symplectic Euler is stable iff h²ω² + 2hc < 4 (Jury's conditions on its 2x2 map).
+    Scene scene = fixed_chain(1, 300.0, 0.02);
+    scene.cloth.rows = 2;  // a pin and one free particle
+    scene.cloth.pin_list = {{0, 0}};
+    scene.structural.damping = 0.3;
+    scene.forces.air_drag = 0.1;
+    const Cloth one = build_grid_cloth(scene);
+    // The bound counts a spring twice (its diagonal and off-diagonal entries, even when the
+    // other end is pinned): ω² <= 2k/m, c <= (2c + drag)/m — safe, and here exactly known.
+    const double omega_squared = 2.0 * 300.0 / 0.02, damping = (2.0 * 0.3 + 0.1) / 0.02;
+    const double h = estimated_step_limit(one, 0.1, Integrator::symplectic_euler);
+    EXPECT_NEAR(h * h * omega_squared + 2.0 * h * damping, 4.0, 1e-12);
+    EXPECT_NEAR(estimated_step_limit(one, 0.1, Integrator::rk4), std::sqrt(2.0) * h, 1e-15);
+    EXPECT_EQ(estimated_step_limit(one, 0.1, Integrator::explicit_euler), 0.0);
+}
+
 TEST(StabilityLimit, StepLimitsAreTheMethodsStabilityIntervals) {
     EXPECT_EQ(stable_step_limit(Integrator::symplectic_euler, 100.0), 0.02);
     EXPECT_EQ(stable_step_limit(Integrator::verlet, 100.0), 0.02);
@@ -73,7 +91,8 @@ TEST(StabilityLimit, MethodsAreStableJustBelowThePredictedLimitAndNotJustAbove) 
                                   Integrator::velocity_verlet, Integrator::rk4}) {
         const double limit = stable_step_limit(integrator, omega);
         EXPECT_TRUE(stays_stable(integrator, 0.97 * limit, 20000)) << integrator_name(integrator);
-        EXPECT_FALSE(stays_stable(integrator, 1.03 * limit, 20000)) << integrator_name(integrator) << " at " << 1.03 * limit;
+        EXPECT_FALSE(stays_stable(integrator, 1.03 * limit, 20000))
+            << integrator_name(integrator) << " at " << 1.03 * limit;
     }
 }
 

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "sim/scene_loader.h"
+#include "sim/toml_input_guard.h"
 #include "sim/toml_reader.h"
 
 namespace weft {
@@ -236,6 +237,8 @@ std::optional<SceneError> apply_override(toml::table& root, const std::string& o
     const std::string value_text = override_text.substr(equals + 1);
 
     toml::table snippet;
+    if (find_unsafe_non_ascii("value = " + value_text))
+        return SceneError{where, "non-ASCII character outside a string"};
     try {
         snippet = toml::parse("value = " + value_text);
     } catch (const toml::parse_error&) {
@@ -272,6 +275,11 @@ SceneLoadResult load_scene_text(std::string_view toml_text, std::string_view sou
                                 const std::vector<std::string>& overrides) {
     SceneLoadResult result;
     const std::string source(source_name);
+    if (auto unsafe = find_unsafe_non_ascii(toml_text)) {
+        result.error = SceneError{source + ":" + std::to_string(unsafe->line) + ":" + std::to_string(unsafe->column),
+                                  "non-ASCII character outside a string or comment"};
+        return result;
+    }
     toml::table root;
     try {
         root = toml::parse(toml_text, source);

@@ -5,7 +5,9 @@ namespace {
 
 enum class Context { code, comment, basic, literal, multiline_basic, multiline_literal };
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+bool is_blank(char c) {
+    return c == ' ' || c == '\t' || c == '\r';
+}
 
 }  // namespace
 
@@ -23,7 +25,9 @@ std::optional<TextPosition> find_unsafe_non_ascii(std::string_view text) {
         return last_code == '\n' || last_code == '=' || last_code == '[' || last_code == ',' ||
                last_code == '{' || last_code == '.';
     };
-    auto at_token = [&](std::size_t at, std::string_view token) { return text.substr(at, token.size()) == token; };
+    auto at_token = [&](std::size_t at, std::string_view token) {
+        return text.substr(at, token.size()) == token;
+    };
     std::size_t skip = 0;  // bytes of a multi-byte token already accounted for
     for (std::size_t at = 0; at < text.size(); ++at) {
         const char c = text[at];
@@ -39,8 +43,9 @@ std::optional<TextPosition> find_unsafe_non_ascii(std::string_view text) {
                     } else if ((c == '"' || c == '\'') && opens_string()) {
                         const bool triple = at_token(at, c == '"' ? "\"\"\"" : "'''");
                         if (triple) skip = 2;
-                        context = c == '"' ? (triple ? Context::multiline_basic : Context::basic)
-                                           : (triple ? Context::multiline_literal : Context::literal);
+                        context = c == '"'
+                                      ? (triple ? Context::multiline_basic : Context::basic)
+                                      : (triple ? Context::multiline_literal : Context::literal);
                         last_code = 'v';  // after a string comes no value
                     } else if (!is_blank(c) && c != '\n') {
                         last_code = c;
@@ -50,8 +55,10 @@ std::optional<TextPosition> find_unsafe_non_ascii(std::string_view text) {
                     if (c == '\n') context = Context::code;
                     break;
                 case Context::basic:
-                    if (c == '\\' && at + 1 < text.size() && text[at + 1] != '\n') skip = 1;  // an escape
-                    else if (c == '"' || c == '\n') context = Context::code;
+                    if (c == '\\' && at + 1 < text.size() && text[at + 1] != '\n')
+                        skip = 1;  // an escape
+                    else if (c == '"' || c == '\n')
+                        context = Context::code;
                     break;
                 case Context::literal:
                     if (c == '\'' || c == '\n') context = Context::code;
@@ -65,8 +72,10 @@ std::optional<TextPosition> find_unsafe_non_ascii(std::string_view text) {
                     if (c == '\\') {
                         std::size_t next = at + 1;
                         while (next < text.size() && is_blank(text[next])) ++next;
-                        if (next < text.size() && text[next] == '\n') trimming = true;
-                        else skip = 1;  // an ordinary escape
+                        if (next < text.size() && text[next] == '\n')
+                            trimming = true;
+                        else
+                            skip = 1;  // an ordinary escape
                     } else if (at_token(at, "\"\"\"")) {
                         context = Context::code;
                         skip = 2;

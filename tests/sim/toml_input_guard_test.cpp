@@ -34,9 +34,11 @@ TEST(TomlInputGuard, RefusesNonAsciiWhereTheParserWouldClassifyIt) {
 
 TEST(TomlInputGuard, AcceptsNonAsciiInStringsAndComments) {
     EXPECT_FALSE(find_unsafe_non_ascii("name = \"Drap\xc3\xa9\"  # N\xc2\xb7s/m\n").has_value());
-    EXPECT_FALSE(find_unsafe_non_ascii("name = 'caf\xc3\xa9'\ns = \"\"\"\n\xc2\xa7\"\"\"\n").has_value());
+    EXPECT_FALSE(
+        find_unsafe_non_ascii("name = 'caf\xc3\xa9'\ns = \"\"\"\n\xc2\xa7\"\"\"\n").has_value());
     EXPECT_FALSE(find_unsafe_non_ascii("a = [\"\xc3\xa9\", '\xc3\xa9']\n").has_value());
-    SceneLoadResult loaded = load_scene_text("name = \"Drap\xc3\xa9\"  # 25\xc3\x97 stiffer\n", "t.toml");
+    SceneLoadResult loaded =
+        load_scene_text("name = \"Drap\xc3\xa9\"  # 25\xc3\x97 stiffer\n", "t.toml");
     ASSERT_TRUE(loaded.ok()) << loaded.error->message();
     EXPECT_EQ(loaded.scene->name, "Drap\xc3\xa9");
 }
@@ -46,7 +48,8 @@ TEST(TomlInputGuard, FuzzerFindingsAreRefusedWithAPosition) {
         const std::string path = std::string(WEFT_SOURCE_DIR "/fuzz/regressions/") + name;
         SceneLoadResult loaded = load_scene_text(read_file(path), "fuzz.toml");
         ASSERT_FALSE(loaded.ok()) << name;
-        EXPECT_NE(loaded.error->what.find("non-ASCII"), std::string::npos) << loaded.error->message();
+        EXPECT_NE(loaded.error->what.find("non-ASCII"), std::string::npos)
+            << loaded.error->message();
         EXPECT_EQ(loaded.error->where.rfind("fuzz.toml:", 0), 0u) << loaded.error->where;
     }
 }

@@ -60,7 +60,7 @@ int run_headless(const CommandLine& command_line) {
     }
 
     Simulation simulation(*scene);
-    const float ground_height = view::ground_height_below(simulation.cloth());
+    const float ground_height = view::ground_height_below(simulation.cloth(), simulation.colliders());
     int status = exit_ok;
     for (std::uint64_t step = 0; step < *command_line.steps; ++step) {
         StepReport report = simulation.step();
@@ -83,7 +83,7 @@ int run_headless(const CommandLine& command_line) {
         raster::Framebuffer framebuffer(command_line.screenshot_width, command_line.screenshot_height);
         view::ClothView cloth_view(simulation.cloth());
         view::render_frame(framebuffer, view::scene_camera(*scene), simulation.cloth(), cloth_view,
-                           view::FrameOptions{}, ground_height);
+                           view::FrameOptions{}, ground_height, simulation.colliders());
         std::string error;
         if (!raster::write_png(framebuffer, *command_line.screenshot_path, &error)) {
             print_error(*command_line.screenshot_path, error);

@@ -42,6 +42,8 @@ void accumulate_forces(const Cloth& cloth, const ForceField& field, std::span<co
     }
     for (const SpringGroup& group : cloth.spring_groups)
         accumulate_spring_forces(group, positions, velocities, forces);
+    if (!field.colliders.empty())
+        accumulate_repulsion_forces(field.colliders, cloth, positions, velocities, forces);
     if (field.drag && field.drag->active())
         accumulate_drag_forces(*field.drag, cloth, positions, velocities, forces);
 }

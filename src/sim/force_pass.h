@@ -5,6 +5,7 @@
 #include <span>
 
 #include "sim/cloth.h"
+#include "sim/colliders.h"
 #include "sim/drag.h"
 
 namespace weft {
@@ -14,7 +15,8 @@ struct ForceField {
     Vec3 gravity{0.0, -9.81, 0.0};  // m/s²
     double air_drag = 0.0;          // N·s/m per particle: f = -air_drag (v - wind)
     Vec3 wind{0.0};                 // m/s
-    const DragHandle* drag = nullptr;  // the user's pull, while there is one
+    const DragHandle* drag = nullptr;      // the user's pull, while there is one
+    std::span<const Collider> colliders;   // those with repulsion contacts, if any
 };
 
 // Writes into `forces` the total force on each particle (N) for the state (positions,
@@ -23,6 +25,7 @@ struct ForceField {
 //   gravity  m g
 //   drag     -air_drag (v - wind)
 //   drag     the user's pull (drag.h), only while dragging
+//   contact  repulsion from colliders (colliders.h), only if the scene has such colliders
 //   springs  for spring (i, j) with rest length L, d = x_j - x_i, u = d / |d|:
 //            f_i = (k (|d| - L) + c ((v_j - v_i) · u)) u,   f_j = -f_i
 //

@@ -319,13 +319,6 @@ SceneLoadResult load_scene_text(std::string_view toml_text, std::string_view sou
         return result;
     }
 
-    // Accepted by the format, not modelled yet: say so rather than ignore them silently.
-    if (scene.strain_limit_max_stretch)
-        result.warnings.push_back(source + ": [strain_limit] is not modelled yet and is ignored");
-    if (scene.self_collision_thickness)
-        result.warnings.push_back(source + ": [self_collision] is not modelled yet and is ignored");
-    if (!scene.colliders.empty())
-        result.warnings.push_back(source + ": [[colliders]] are not modelled yet and are ignored");
     result.scene = std::move(scene);
     return result;
 }

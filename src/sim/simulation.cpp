@@ -1,9 +1,11 @@
 #include "sim/simulation.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "sim/cloth_builder.h"
 #include "sim/divergence.h"
+#include "sim/strain_limit.h"
 #include "sim/tearing.h"
 
 namespace weft {
@@ -36,6 +38,11 @@ void Simulation::reset() {
     set_force_field(scene_.forces.gravity, scene_.forces.air_drag, scene_.forces.wind);
     workspace_.resize(cloth_.particle_count());
     drag_ = DragHandle{};
+    colliders_ = make_colliders(scene_.colliders);
+    has_repulsion_ = std::any_of(colliders_.begin(), colliders_.end(),
+                                 [](const Collider& c) { return c.response == ContactResponse::repulsion; });
+    self_collision_.reset();
+    if (scene_.self_collision_thickness) self_collision_.emplace(*scene_.self_collision_thickness);
     time_ = 0.0;
     steps_taken_ = 0;
 }
@@ -45,14 +52,24 @@ StepReport Simulation::step() {
     // The field points at the drag only for the step, so a copied Simulation never holds a
     // pointer into another one.
     field_.drag = drag_.active() ? &drag_ : nullptr;
+    field_.colliders = has_repulsion_ ? std::span<const Collider>(colliders_) : std::span<const Collider>();
     step_function_(cloth_, field_, dt_, workspace_);
     field_.drag = nullptr;
+    field_.colliders = {};
+    // Corrections of positions and velocities after the step; any of them makes the history
+    // the Verlets carry stale.
+    std::size_t corrections = 0;
+    if (scene_.strain_limit_max_stretch)
+        corrections += limit_strain(cloth_, *scene_.strain_limit_max_stretch, dt_);
+    if (!colliders_.empty()) report.contacts += resolve_impulse_contacts(colliders_, cloth_);
+    if (self_collision_) report.contacts += self_collision_->resolve(cloth_);
+    corrections += report.contacts;
     time_ += dt_;
     ++steps_taken_;
     if (scene_.tear_max_stretch)
         report.springs_torn = tear_overstretched_springs(cloth_, *scene_.tear_max_stretch);
     // Forces changed with the topology; the Verlets' carried acceleration is stale.
-    if (report.springs_torn) workspace_.history_valid = false;
+    if (report.springs_torn || corrections) workspace_.history_valid = false;
     // With tearing on, a runaway spring breaks instead of stretching without bound, so only
     // non-finite values count as divergence.
     report.divergence = find_divergence(cloth_, /*check_runaway_stretch=*/!scene_.tear_max_stretch);
@@ -97,6 +114,15 @@ void Simulation::set_force_field(const Vec3d& gravity, double air_drag, const Ve
 
 void Simulation::set_tear_limit(std::optional<double> max_stretch) {
     scene_.tear_max_stretch = max_stretch;
+}
+
+void Simulation::set_strain_limit(std::optional<double> max_stretch) {
+    scene_.strain_limit_max_stretch = max_stretch;
+}
+
+Collider& Simulation::edit_collider(std::size_t index) {
+    workspace_.history_valid = false;
+    return colliders_.at(index);
 }
 
 void Simulation::start_drag(DragHandle drag) {

@@ -7,7 +7,9 @@
 #include <string>
 
 #include "sim/cloth.h"
+#include "sim/colliders.h"
 #include "sim/drag.h"
+#include "sim/self_collision.h"
 #include "sim/force_pass.h"
 #include "sim/integrators/integrator.h"
 #include "sim/scene.h"
@@ -17,6 +19,7 @@ namespace weft {
 
 struct StepReport {
     std::size_t springs_torn = 0;           // springs that broke in this step
+    std::size_t contacts = 0;               // impulse contacts and self-collision pairs resolved
     std::optional<std::string> divergence;  // why the state is no longer sound, if it is not
     bool diverged() const { return divergence.has_value(); }
 };
@@ -30,8 +33,9 @@ class Simulation {
     // Why a valid scene cannot be simulated by this build, or nothing.
     static std::optional<std::string> unsupported_feature(const Scene& scene);
 
-    // Advances by one step of dt. Tearing, when the scene has it, is applied at the end of
-    // the step; then the divergence guard looks at the new state.
+    // Advances by one step of dt, then applies what the scene asks for, in this order:
+    // strain limiting, impulse contacts with colliders, self-collision, tearing; then the
+    // divergence guard looks at the new state. (Repulsion contacts are forces, inside the step.)
     StepReport step();
 
     double time() const { return time_; }  // s, simulated
@@ -51,6 +55,10 @@ class Simulation {
     void set_spring_material(SpringFamily family, double stiffness, double damping);
     void set_force_field(const Vec3d& gravity, double air_drag, const Vec3d& wind);
     void set_tear_limit(std::optional<double> max_stretch);
+    void set_strain_limit(std::optional<double> max_stretch);
+    const std::vector<Collider>& colliders() const { return colliders_; }
+    // Moves or edits a collider (the demo moves a sphere with the keyboard).
+    Collider& edit_collider(std::size_t index);
 
     // Back to the scene's initial state (with the parameters as they are now).
     void reset();
@@ -84,6 +92,9 @@ class Simulation {
     double dt_;
     IntegratorWorkspace workspace_;
     DragHandle drag_;
+    std::vector<Collider> colliders_;
+    bool has_repulsion_ = false;  // any collider with the repulsion response
+    std::optional<SelfCollision> self_collision_;
     double time_ = 0.0;
     std::uint64_t steps_taken_ = 0;
 };

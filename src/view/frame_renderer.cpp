@@ -4,6 +4,7 @@
 
 #include "raster/ground_grid.h"
 #include "raster/line_renderer.h"
+#include "raster/sphere.h"
 
 namespace weft::view {
 
@@ -24,7 +25,10 @@ raster::Camera scene_camera(const Scene& scene) {
                                static_cast<float>(scene.camera.fov_degrees));
 }
 
-float ground_height_below(const Cloth& cloth) {
+float ground_height_below(const Cloth& cloth, std::span<const Collider> colliders) {
+    for (const Collider& collider : colliders)
+        if (collider.type == ColliderType::plane && collider.normal.y > 0.999)
+            return static_cast<float>(collider.point.y);
     // Below the lowest point the cloth starts at, and below the lowest point it can reach
     // hanging from its pins (a cloth edge's length below the lowest pin).
     double lowest = 0.0;
@@ -37,7 +41,7 @@ float ground_height_below(const Cloth& cloth) {
 
 void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera,
                   const Cloth& cloth, ClothView& view, const FrameOptions& options,
-                  float ground_height) {
+                  float ground_height, std::span<const Collider> colliders) {
     framebuffer.clear(options.background);
     view.update(cloth);
     if (options.ground) {
@@ -54,6 +58,17 @@ void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera
             lighting.direction_to_light = -basis.forward + 0.9f * basis.up + 0.5f * basis.right;
         }
         raster::draw_mesh(framebuffer, camera, view.mesh(), options.surface, lighting);
+        raster::SurfaceStyle collider_style;
+        collider_style.front_colour = collider_style.back_colour = {0.62f, 0.64f, 0.68f};
+        for (const Collider& collider : colliders) {
+            if (collider.type != ColliderType::sphere) continue;
+            static const raster::TriangleMesh unit_sphere = raster::make_uv_sphere(48, 24);
+            // Drawn 1.5 % small: cloth resting on the sphere is flat between its particles, and
+            // a full-size ball would show through the middle of every triangle on top of it.
+            raster::draw_sphere(framebuffer, camera, unit_sphere, glm::vec3(collider.center),
+                                0.985f * static_cast<float>(collider.radius), collider_style,
+                                lighting);
+        }
     }
     if (options.wireframe)
         raster::draw_indexed_lines(framebuffer, camera, view.positions(), view.wireframe_edges(),

@@ -6,6 +6,7 @@
 #include "raster/framebuffer.h"
 #include "raster/mesh_renderer.h"
 #include "sim/cloth.h"
+#include "sim/colliders.h"
 #include "sim/scene.h"
 #include "view/cloth_view.h"
 
@@ -28,11 +29,14 @@ struct FrameOptions {
 // The scene's [camera] as the rasterizer's camera.
 raster::Camera scene_camera(const Scene& scene);
 
-// Where the ground grid goes: below the cloth, as it starts and as it can hang from its pins.
-float ground_height_below(const Cloth& cloth);
+// Where the ground grid goes: on the scene's horizontal ground plane if it has one, else
+// below the cloth, as it starts and as it can hang from its pins.
+float ground_height_below(const Cloth& cloth, std::span<const Collider> colliders = {});
 
+// Draws the frame; spheres among `colliders` are drawn as shaded balls (planes show as the
+// ground grid).
 void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera,
                   const Cloth& cloth, ClothView& view, const FrameOptions& options,
-                  float ground_height);
+                  float ground_height, std::span<const Collider> colliders = {});
 
 }  // namespace weft::view

@@ -1,0 +1,101 @@
+#include "sim/colliders.h"
+
+#include <cmath>
+#include <glm/geometric.hpp>
+
+namespace weft {
+namespace {
+
+Vec3 to_vec3(const Vec3d& v) {
+    return {v[0], v[1], v[2]};
+}
+
+}  // namespace
+
+std::vector<Collider> make_colliders(const std::vector<ColliderSpec>& specs) {
+    std::vector<Collider> colliders;
+    for (const ColliderSpec& spec : specs) {
+        Collider c;
+        c.type = spec.type;
+        c.center = to_vec3(spec.center);
+        c.radius = spec.radius;
+        c.point = to_vec3(spec.point);
+        c.normal = glm::normalize(to_vec3(spec.normal));
+        c.response = spec.response;
+        c.restitution = spec.restitution;
+        c.friction = spec.friction;
+        colliders.push_back(c);
+    }
+    return colliders;
+}
+
+double signed_distance(const Collider& collider, const Vec3& x, Vec3& outward_normal) {
+    if (collider.type == ColliderType::plane) {
+        outward_normal = collider.normal;
+        return glm::dot(x - collider.point, collider.normal);
+    }
+    const Vec3 from_center = x - collider.center;
+    const double distance = glm::length(from_center);
+    // At the very centre any direction is outward; pick up.
+    outward_normal = distance > 0.0 ? from_center / distance : Vec3(0.0, 1.0, 0.0);
+    return distance - collider.radius;
+}
+
+void accumulate_repulsion_forces(std::span<const Collider> colliders, const Cloth& cloth,
+                                 std::span<const Vec3> positions, std::span<const Vec3> velocities,
+                                 std::span<Vec3> forces) {
+    constexpr double omega = repulsion_angular_frequency;
+    for (const Collider& collider : colliders) {
+        if (collider.response != ContactResponse::repulsion) continue;
+        for (std::size_t p = 0; p < positions.size(); ++p) {
+            Vec3 n;
+            const double depth = repulsion_layer - signed_distance(collider, positions[p], n);
+            if (depth <= 0.0) continue;
+            const double mass = cloth.masses[p];
+            const double normal_speed = glm::dot(velocities[p], n);
+            // Spring m ω² depth and a critically damped dashpot on the normal speed; the
+            // contact only pushes, never pulls.
+            const double normal_force =
+                std::max(0.0, mass * (omega * omega * depth - 2.0 * omega * normal_speed));
+            Vec3 force = normal_force * n;
+            // Coulomb friction, regularised over 1 mm/s so resting contact does not chatter.
+            const Vec3 tangential = velocities[p] - normal_speed * n;
+            const double sliding_speed = glm::length(tangential);
+            if (sliding_speed > 0.0) {
+                const double scale =
+                    collider.friction * normal_force / std::max(sliding_speed, 1e-3);
+                force -= scale * tangential;
+            }
+            forces[p] += force;
+        }
+    }
+}
+
+std::size_t resolve_impulse_contacts(std::span<const Collider> colliders, Cloth& cloth) {
+    std::size_t contacts = 0;
+    for (const Collider& collider : colliders) {
+        if (collider.response != ContactResponse::impulse) continue;
+        for (std::size_t p = 0; p < cloth.particle_count(); ++p) {
+            if (cloth.is_pinned(p)) continue;
+            Vec3 n;
+            const double distance = signed_distance(collider, cloth.positions[p], n);
+            if (distance >= 0.0) continue;
+            ++contacts;
+            cloth.positions[p] -= distance * n;  // onto the surface
+            Vec3& v = cloth.velocities[p];
+            const double normal_speed = glm::dot(v, n);
+            if (normal_speed >= 0.0) continue;  // already leaving
+            const Vec3 tangential = v - normal_speed * n;
+            const double normal_change = -(1.0 + collider.restitution) * normal_speed;
+            const double sliding_speed = glm::length(tangential);
+            const double tangential_scale =
+                sliding_speed > 0.0
+                    ? std::max(0.0, 1.0 - collider.friction * normal_change / sliding_speed)
+                    : 0.0;
+            v = -collider.restitution * normal_speed * n + tangential_scale * tangential;
+        }
+    }
+    return contacts;
+}
+
+}  // namespace weft

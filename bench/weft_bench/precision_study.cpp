@@ -109,7 +109,7 @@ int run_precision_study(const PrecisionOptions& options) {
         PlotSpec order{"Error against dt: " + scene->name + " (" + tag + ")", "dt (s)",
                        "RMS position error, max over 4 times (m)"};
         int colour = 0;
-        for (Integrator integrator : explicit_integrators) {
+        for (Integrator integrator : all_integrators) {
             if (stop_requested) break;
             PlotSeries work_series{integrator_name(integrator), series_colour(colour)};
             PlotSeries order_series{integrator_name(integrator), series_colour(colour)};

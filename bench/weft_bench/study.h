@@ -33,6 +33,9 @@ const char* short_name(Integrator integrator);
 inline constexpr Integrator explicit_integrators[] = {
     Integrator::explicit_euler, Integrator::symplectic_euler, Integrator::verlet,
     Integrator::velocity_verlet, Integrator::rk4};
+inline constexpr Integrator all_integrators[] = {
+    Integrator::explicit_euler, Integrator::symplectic_euler, Integrator::verlet,
+    Integrator::velocity_verlet, Integrator::rk4, Integrator::implicit_euler};
 
 // "AMD EPYC, 2 cores": for the header of every report.
 std::string machine_description();

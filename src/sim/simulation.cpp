@@ -18,8 +18,6 @@ Vec3 to_vec3(const Vec3d& v) {
 }  // namespace
 
 std::optional<std::string> Simulation::unsupported_feature(const Scene& scene) {
-    if (scene.solver.integrator == Integrator::implicit_euler)
-        return "solver.integrator \"implicit-euler\" is not available yet";
     if (scene.cloth.layout == Layout::offset) return "cloth.layout \"offset\" is not available yet";
     return std::nullopt;
 }

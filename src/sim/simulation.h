@@ -41,6 +41,14 @@ class Simulation {
     double time() const { return time_; }  // s, simulated
     std::uint64_t steps_taken() const { return steps_taken_; }
     std::uint64_t force_evaluations() const { return workspace_.force_evaluations; }
+    // How implicit Euler's last conjugate-gradient solve went.
+    struct LinearSolve {
+        int iterations;
+        double relative_residual;  // |A Δv - b| / |b|
+    };
+    LinearSolve last_linear_solve() const {
+        return {workspace_.implicit_last_iterations, workspace_.implicit_last_relative_residual};
+    }
 
     const Cloth& cloth() const { return cloth_; }
     const ForceField& force_field() const { return field_; }

@@ -28,7 +28,7 @@ StepFunction step_function(Integrator integrator) {
         case Integrator::rk4:
             return step_rk4;
         case Integrator::implicit_euler:
-            return nullptr;
+            return step_implicit_euler;
     }
     return nullptr;
 }

@@ -14,6 +14,17 @@
 
 namespace weft {
 
+// Implicit Euler's per-spring share of h² K + h C: the 3x3 block is
+// isotropic · I + along · u uᵀ (see implicit_euler.cpp).
+struct ImplicitSpringTerms {
+    Vec3 direction{0.0};     // u, unit, from i to j
+    double isotropic = 0.0;  // h² k max(0, 1 - L/l)
+    double along = 0.0;      // h² (k - that) + h c
+};
+
+inline constexpr double implicit_cg_tolerance = 1e-8;  // relative residual |A Δv - b| / |b|
+inline constexpr int implicit_cg_max_iterations = 500;
+
 // Scratch arrays and the history some methods carry from step to step. Sized once
 // (resize), so no method allocates inside a step.
 struct IntegratorWorkspace {
@@ -26,6 +37,13 @@ struct IntegratorWorkspace {
     std::vector<Vec3> velocity_rate_sum;   // m/s²
     // False whenever the carried history no longer belongs to the current state and dt: at
     // the start, after a change of dt or integrator, or after the state was edited (a drag).
+    // Implicit Euler (allocated on its first step): the solution Δv (kept: the warm start),
+    // right-hand side, CG vectors, per-spring terms and how the last solve went.
+    std::vector<Vec3> implicit_delta_v, implicit_rhs, implicit_residual, implicit_direction,
+        implicit_product;
+    std::vector<ImplicitSpringTerms> implicit_springs;
+    int implicit_last_iterations = 0;
+    double implicit_last_relative_residual = 0.0;
     bool history_valid = false;
     std::uint64_t force_evaluations = 0;  // total calls of the force pass, for cost studies
 
@@ -47,11 +65,18 @@ void step_verlet(Cloth& cloth, const ForceField& field, double dt, IntegratorWor
 void step_velocity_verlet(Cloth& cloth, const ForceField& field, double dt,
                           IntegratorWorkspace& work);
 void step_rk4(Cloth& cloth, const ForceField& field, double dt, IntegratorWorkspace& work);
+void step_implicit_euler(Cloth& cloth, const ForceField& field, double dt,
+                         IntegratorWorkspace& work);
 
-// The step function of a method; nullptr for one not implemented (implicit Euler).
+// y = (M + h C + h² K) v for the terms of the last implicit step, pinned entries zero.
+void multiply_implicit_system(const Cloth& cloth, const IntegratorWorkspace& work, double air_drag,
+                              double dt, std::span<const Vec3> vector, std::span<Vec3> product);
+
+// The step function of a method.
 StepFunction step_function(Integrator integrator);
 
-// Force evaluations one step costs (the first step of the Verlets costs one more).
+// Force evaluations one step costs (the first step of the Verlets costs one more; implicit
+// Euler's CG iterations each cost about two force passes on top).
 int force_evaluations_per_step(Integrator integrator);
 
 }  // namespace weft

@@ -1,0 +1,136 @@
+// Implicit (backward) Euler, linearised once per step (Baraff & Witkin 1998):
+//
+//   (M - h ∂f/∂v - h² ∂f/∂x) Δv = h (f0 + h ∂f/∂x v0),   v1 = v0 + Δv,   x1 = x0 + h v1
+//
+// First order and unconditionally stable on linear springs, at the price of one sparse
+// linear solve per step; it damps motion (numerical dissipation grows with h ω).
+//
+// The Jacobians, per spring with d = x_j - x_i, l = |d|, u = d / l:
+//   ∂f_i/∂x_j = k [u uᵀ + (1 - L/l)(I - u uᵀ)],   ∂f_i/∂v_j = c u uᵀ,
+// with ∂f_i/∂x_i, ∂f_i/∂v_i their negatives; air drag adds -air_drag I to ∂f/∂v. The
+// transverse term (1 - L/l) is clamped at 0 for compressed springs: negative, it makes the
+// system indefinite and conjugate gradient unreliable (Choi & Ko 2002 discuss the buckling
+// behind it). The drag handle and repulsion contacts are taken explicitly, in f0.
+//
+// The system matrix A = M + h C + h² K is symmetric positive definite; it is never
+// assembled. Conjugate gradient multiplies by it spring by spring, with pinned particles
+// filtered out of every vector (Baraff & Witkin's constraint filter for fully constrained
+// particles), warm-started from the previous step's Δv, until the residual is below
+// implicit_cg_tolerance × |b| or implicit_cg_max_iterations is reached.
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "sim/integrators/integrator.h"
+
+namespace weft {
+namespace {
+
+double inner(std::span<const Vec3> a, std::span<const Vec3> b) {
+    double sum = 0.0;
+    for (std::size_t p = 0; p < a.size(); ++p) sum += glm::dot(a[p], b[p]);
+    return sum;
+}
+
+}  // namespace
+
+void multiply_implicit_system(const Cloth& cloth, const IntegratorWorkspace& work, double air_drag,
+                              double dt, std::span<const Vec3> vector, std::span<Vec3> product) {
+    const std::size_t count = cloth.particle_count();
+    for (std::size_t p = 0; p < count; ++p)
+        product[p] = (cloth.masses[p] + dt * air_drag) * vector[p];
+    std::size_t s = 0;
+    for (const SpringGroup& group : cloth.spring_groups) {
+        for (const Spring& spring : group.springs) {
+            const ImplicitSpringTerms& terms = work.implicit_springs[s++];
+            // (h² K + h C) applied to the relative vector of the two ends.
+            const Vec3 relative = vector[spring.i] - vector[spring.j];
+            const Vec3 block =
+                terms.isotropic * relative +
+                (terms.along * glm::dot(terms.direction, relative)) * terms.direction;
+            product[spring.i] += block;
+            product[spring.j] -= block;
+        }
+    }
+    for (std::uint32_t p : cloth.pinned) product[p] = Vec3(0.0);
+}
+
+void step_implicit_euler(Cloth& cloth, const ForceField& field, double dt,
+                         IntegratorWorkspace& work) {
+    const std::size_t count = cloth.particle_count();
+    work.implicit_springs.resize(cloth.spring_count());  // shrinks with tearing, never grows
+    if (work.implicit_delta_v.size() != count) {
+        for (auto* array : {&work.implicit_delta_v, &work.implicit_rhs, &work.implicit_residual,
+                            &work.implicit_direction, &work.implicit_product})
+            array->assign(count, Vec3(0.0));
+    }
+    evaluate_forces(cloth, field, cloth.positions, cloth.velocities, work);
+
+    // Per-spring terms of h² K + h C, and the right-hand side b = h (f0 - h K v0).
+    std::size_t s = 0;
+    for (const SpringGroup& group : cloth.spring_groups) {
+        for (const Spring& spring : group.springs) {
+            const Vec3 d = cloth.positions[spring.j] - cloth.positions[spring.i];
+            const double length = glm::length(d);
+            ImplicitSpringTerms& terms = work.implicit_springs[s++];
+            if (length <= 0.0) {
+                terms = {Vec3(0.0), 0.0, 0.0};
+                continue;
+            }
+            const double transverse =
+                group.stiffness * std::max(0.0, 1.0 - spring.rest_length / length);
+            terms.direction = d / length;
+            terms.isotropic = dt * dt * transverse;
+            terms.along = dt * dt * (group.stiffness - transverse) + dt * group.damping;
+        }
+    }
+    // b = h f0 - h² K v0: K v0 is the stiffness part of the same per-spring blocks.
+    std::span<Vec3> b = work.implicit_rhs;
+    for (std::size_t p = 0; p < count; ++p) b[p] = dt * work.forces[p];
+    s = 0;
+    for (const SpringGroup& group : cloth.spring_groups) {
+        for (const Spring& spring : group.springs) {
+            const ImplicitSpringTerms& terms = work.implicit_springs[s++];
+            const Vec3 relative = cloth.velocities[spring.i] - cloth.velocities[spring.j];
+            const double stiffness_along =
+                terms.along - dt * group.damping;  // h² k·(u uᵀ) part only
+            const Vec3 block =
+                terms.isotropic * relative +
+                (stiffness_along * glm::dot(terms.direction, relative)) * terms.direction;
+            b[spring.i] -= block;
+            b[spring.j] += block;
+        }
+    }
+    for (std::uint32_t p : cloth.pinned) b[p] = Vec3(0.0);
+
+    // Conjugate gradient from the warm start.
+    std::span<Vec3> x = work.implicit_delta_v, r = work.implicit_residual,
+                    d = work.implicit_direction, q = work.implicit_product;
+    for (std::uint32_t p : cloth.pinned) x[p] = Vec3(0.0);
+    multiply_implicit_system(cloth, work, field.air_drag, dt, x, q);
+    for (std::size_t p = 0; p < count; ++p) r[p] = b[p] - q[p], d[p] = r[p];
+    const double b_norm = std::sqrt(inner(b, b));
+    const double target = implicit_cg_tolerance * b_norm;
+    double r_squared = inner(r, r);
+    int iteration = 0;
+    while (std::sqrt(r_squared) > target && iteration < implicit_cg_max_iterations) {
+        multiply_implicit_system(cloth, work, field.air_drag, dt, d, q);
+        const double curvature = inner(d, q);
+        if (!(curvature > 0.0)) break;  // not positive definite (or NaN): stop, the guard will see
+        const double alpha = r_squared / curvature;
+        for (std::size_t p = 0; p < count; ++p) x[p] += alpha * d[p], r[p] -= alpha * q[p];
+        const double next_r_squared = inner(r, r);
+        const double beta = next_r_squared / r_squared;
+        r_squared = next_r_squared;
+        for (std::size_t p = 0; p < count; ++p) d[p] = r[p] + beta * d[p];
+        ++iteration;
+    }
+    work.implicit_last_iterations = iteration;
+    work.implicit_last_relative_residual = b_norm > 0.0 ? std::sqrt(r_squared) / b_norm : 0.0;
+
+    for (std::size_t p = 0; p < count; ++p) {
+        cloth.velocities[p] += x[p];
+        cloth.positions[p] += dt * cloth.velocities[p];
+    }
+}
+
+}  // namespace weft

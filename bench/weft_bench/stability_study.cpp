@@ -188,7 +188,7 @@ int run_stability_study(const StabilityOptions& options) {
             for (std::size_t k = 0; k < points.size() && !stop_requested; ++k) {
                 const SweepPoint& point = points[k];
                 const Scene scene = damped ? point.scene : without_damping(point.scene);
-                const double omega = highest_angular_frequency(build_grid_cloth(scene));
+                const double omega = highest_angular_frequency(build_cloth(scene));
                 const double predicted_dt = stable_step_limit(integrator, omega);
                 std::printf("  %-9s %-12s %-17s w_max %8.1f rad/s  predicted %-10.4g ",
                             sweep.c_str(), point.label.c_str(), integrator_name(integrator), omega,

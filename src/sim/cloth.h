@@ -42,7 +42,9 @@ struct Triangle {
 struct Cloth {
     int rows = 0;  // grid rows the cloth was built from (particle = row * cols + col)
     int cols = 0;
-    double spacing = 0.0;  // m, rest distance between grid neighbours
+    double spacing = 0.0;        // m, rest distance between grid neighbours
+    double row_pitch = 1.0;      // rest distance between rows, in spacings (offset: √3/2)
+    double odd_row_shift = 0.0;  // odd rows' shift along a row, in spacings (offset: 1/2)
 
     // Per-step state.
     std::vector<Vec3> positions;   // m

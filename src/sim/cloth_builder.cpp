@@ -1,7 +1,9 @@
 #include "sim/cloth_builder.h"
 
 #include <algorithm>
+#include <cmath>
 #include <glm/geometric.hpp>
+#include <vector>
 
 namespace weft {
 namespace {
@@ -10,17 +12,21 @@ Vec3 to_vec3(const Vec3d& v) {
     return {v[0], v[1], v[2]};
 }
 
-// Emits springs in particle order (each particle's springs to its right and lower
-// neighbours), so consecutive springs touch nearby memory in the force pass.
+using NeighbourOffsets = std::vector<std::pair<int, int>>;  // (row, col) steps to a neighbour
+
+// The springs of one family: from every particle to its neighbours at the given offsets
+// (forward offsets only, so each spring appears once). Offsets may depend on the row's
+// parity (the offset layout). Springs come in particle order, so consecutive springs touch
+// nearby memory in the force pass.
 SpringGroup make_group(SpringFamily family, const SpringFamilySpec& spec, const Cloth& cloth,
-                       std::initializer_list<std::pair<int, int>> neighbour_offsets) {
+                       const NeighbourOffsets& even_rows, const NeighbourOffsets& odd_rows) {
     SpringGroup group;
     group.family = family;
     group.stiffness = spec.stiffness;
     group.damping = spec.damping;
     for (int r = 0; r < cloth.rows; ++r) {
         for (int c = 0; c < cloth.cols; ++c) {
-            for (auto [dr, dc] : neighbour_offsets) {
+            for (auto [dr, dc] : (r % 2 ? odd_rows : even_rows)) {
                 const int r2 = r + dr, c2 = c + dc;
                 if (r2 < 0 || r2 >= cloth.rows || c2 < 0 || c2 >= cloth.cols) continue;
                 const auto i = static_cast<std::uint32_t>(r * cloth.cols + c);
@@ -33,30 +39,30 @@ SpringGroup make_group(SpringFamily family, const SpringFamilySpec& spec, const 
     return group;
 }
 
-}  // namespace
-
-Cloth build_grid_cloth(const Scene& scene) {
-    const ClothSpec& spec = scene.cloth;
+// Particles, masses and pins; `row_shift(r)` is the row's x offset in spacings and
+// `row_pitch` the distance between rows in spacings.
+Cloth place_particles(const ClothSpec& spec, double row_pitch, double odd_row_shift) {
     Cloth cloth;
     cloth.rows = spec.rows;
     cloth.cols = spec.cols;
     cloth.spacing = spec.spacing;
+    cloth.row_pitch = row_pitch;
+    cloth.odd_row_shift = odd_row_shift;
     const std::size_t count = static_cast<std::size_t>(spec.rows) * spec.cols;
     cloth.positions.resize(count);
     cloth.velocities.assign(count, Vec3(0.0));
     cloth.masses.assign(count, spec.particle_mass);
     cloth.inverse_masses.assign(count, 1.0 / spec.particle_mass);
-
     const Vec3 origin = to_vec3(spec.origin);
     for (int r = 0; r < spec.rows; ++r) {
         for (int c = 0; c < spec.cols; ++c) {
-            const double across = c * spec.spacing, down = r * spec.spacing;
+            const double across = (c + (r % 2 ? odd_row_shift : 0.0)) * spec.spacing;
+            const double down = r * row_pitch * spec.spacing;
             const Vec3 offset = spec.orientation == Orientation::vertical ? Vec3(across, -down, 0.0)
                                                                           : Vec3(across, 0.0, down);
             cloth.positions[static_cast<std::size_t>(r) * spec.cols + c] = origin + offset;
         }
     }
-
     auto pin = [&](int r, int c) {
         cloth.inverse_masses[static_cast<std::size_t>(r) * spec.cols + c] = 0.0;
     };
@@ -76,27 +82,74 @@ Cloth build_grid_cloth(const Scene& scene) {
     }
     for (std::size_t i = 0; i < count; ++i)
         if (cloth.inverse_masses[i] == 0.0) cloth.pinned.push_back(static_cast<std::uint32_t>(i));
+    return cloth;
+}
 
+void add_families(const Scene& scene, Cloth& cloth, const NeighbourOffsets (&even)[3],
+                  const NeighbourOffsets (&odd)[3]) {
     cloth.spring_groups.push_back(
-        make_group(SpringFamily::structural, scene.structural, cloth, {{0, 1}, {1, 0}}));
+        make_group(SpringFamily::structural, scene.structural, cloth, even[0], odd[0]));
     if (scene.shear.enabled)
         cloth.spring_groups.push_back(
-            make_group(SpringFamily::shear, scene.shear, cloth, {{1, 1}, {1, -1}}));
+            make_group(SpringFamily::shear, scene.shear, cloth, even[1], odd[1]));
     if (scene.bend.enabled)
         cloth.spring_groups.push_back(
-            make_group(SpringFamily::bend, scene.bend, cloth, {{0, 2}, {2, 0}}));
+            make_group(SpringFamily::bend, scene.bend, cloth, even[2], odd[2]));
+}
 
-    for (int r = 0; r + 1 < spec.rows; ++r) {
-        for (int c = 0; c + 1 < spec.cols; ++c) {
-            const auto top_left = static_cast<std::uint32_t>(r * spec.cols + c);
+}  // namespace
+
+Cloth build_grid_cloth(const Scene& scene) {
+    Cloth cloth = place_particles(scene.cloth, 1.0, 0.0);
+    // Structural: right and down; shear: both diagonals; bend: two right and two down.
+    const NeighbourOffsets families[3] = {{{0, 1}, {1, 0}}, {{1, 1}, {1, -1}}, {{0, 2}, {2, 0}}};
+    add_families(scene, cloth, families, families);
+    for (int r = 0; r + 1 < cloth.rows; ++r) {
+        for (int c = 0; c + 1 < cloth.cols; ++c) {
+            const auto top_left = static_cast<std::uint32_t>(r * cloth.cols + c);
             const auto top_right = top_left + 1;
-            const auto bottom_left = top_left + static_cast<std::uint32_t>(spec.cols);
+            const auto bottom_left = top_left + static_cast<std::uint32_t>(cloth.cols);
             const auto bottom_right = bottom_left + 1;
             cloth.triangles.push_back({top_left, bottom_left, top_right});
             cloth.triangles.push_back({top_right, bottom_left, bottom_right});
         }
     }
     return cloth;
+}
+
+Cloth build_offset_cloth(const Scene& scene) {
+    // Odd rows shifted right by half a spacing, rows √3/2 spacings apart: every particle and
+    // its neighbours form equilateral triangles. Below an even-row particle (r, c) sit
+    // (r+1, c-1) and (r+1, c); below an odd-row one, (r+1, c) and (r+1, c+1).
+    Cloth cloth = place_particles(scene.cloth, std::sqrt(3.0) / 2.0, 0.5);
+    // Structural (distance s): right and the two below. Shear (√3 s): the far corners of the
+    // two triangles on either side of an edge — two rows down, and one row down 1.5 s to
+    // either side. Bend (2 s): two along each lattice line.
+    const NeighbourOffsets even[3] = {
+        {{0, 1}, {1, -1}, {1, 0}}, {{2, 0}, {1, -2}, {1, 1}}, {{0, 2}, {2, -1}, {2, 1}}};
+    const NeighbourOffsets odd[3] = {
+        {{0, 1}, {1, 0}, {1, 1}}, {{2, 0}, {1, -1}, {1, 2}}, {{0, 2}, {2, -1}, {2, 1}}};
+    add_families(scene, cloth, even, odd);
+    const auto index = [&](int r, int c) { return static_cast<std::uint32_t>(r * cloth.cols + c); };
+    for (int r = 0; r + 1 < cloth.rows; ++r) {
+        const int shift = r % 2;  // the lower row's neighbours sit `shift` columns further right
+        for (int c = 0; c + 1 < cloth.cols; ++c) {
+            // Counter-clockwise seen from the front, like the grid's.
+            if (shift == 0) {
+                cloth.triangles.push_back({index(r, c), index(r + 1, c), index(r, c + 1)});
+                cloth.triangles.push_back({index(r, c + 1), index(r + 1, c), index(r + 1, c + 1)});
+            } else {
+                cloth.triangles.push_back({index(r, c), index(r + 1, c + 1), index(r, c + 1)});
+                cloth.triangles.push_back({index(r, c), index(r + 1, c), index(r + 1, c + 1)});
+            }
+        }
+    }
+    return cloth;
+}
+
+Cloth build_cloth(const Scene& scene) {
+    return scene.cloth.layout == Layout::offset ? build_offset_cloth(scene)
+                                                : build_grid_cloth(scene);
 }
 
 }  // namespace weft

@@ -10,7 +10,16 @@ namespace weft {
 // Particle (row, col) is index row * cols + col. Structural springs join (r,c)-(r,c+1) and
 // (r,c)-(r+1,c); shear springs both diagonals of every cell; bend springs (r,c)-(r,c+2) and
 // (r,c)-(r+2,c). Rest lengths are the distances in the initial, flat configuration.
-// Requires a validated scene with layout == grid.
+// Requires a validated scene.
 Cloth build_grid_cloth(const Scene& scene);
+
+// The offset layout: odd rows shifted by half a spacing and rows √3/2 spacings apart, so
+// structural springs form equilateral triangles (six neighbours inside the sheet); shear
+// springs join particles √3 spacings apart, bend springs 2 spacings apart along the
+// lattice lines.
+Cloth build_offset_cloth(const Scene& scene);
+
+// The builder the scene's layout asks for.
+Cloth build_cloth(const Scene& scene);
 
 }  // namespace weft

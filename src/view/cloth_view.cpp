@@ -12,12 +12,15 @@ ClothView::ClothView(const Cloth& cloth) {
     positions_.resize(count);
     normals_.resize(count);
     uvs_.resize(count);
-    // Texture coordinates in metres of rest fabric, so a pattern keeps its size whatever the
-    // grid resolution.
-    const double spacing = cloth.spacing;
-    for (std::size_t p = 0; p < count; ++p)
-        uvs_[p] = glm::vec2(static_cast<float>(static_cast<double>(p % cloth.cols) * spacing),
-                            static_cast<float>(static_cast<double>(p / cloth.cols) * spacing));
+    // Texture coordinates: where the particle sits in the flat rest sheet, in metres, so a
+    // pattern keeps its size whatever the resolution or layout.
+    for (std::size_t p = 0; p < count; ++p) {
+        const auto row = static_cast<double>(p / cloth.cols),
+                   col = static_cast<double>(p % cloth.cols);
+        const double shift = (p / cloth.cols) % 2 ? cloth.odd_row_shift : 0.0;
+        uvs_[p] = glm::vec2(static_cast<float>((col + shift) * cloth.spacing),
+                            static_cast<float>(row * cloth.row_pitch * cloth.spacing));
+    }
     rebuild_topology(cloth);
     update(cloth);
 }

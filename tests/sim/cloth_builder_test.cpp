@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 
 #include "sim/cloth_builder.h"
+#include "sim/simulation.h"
 
 namespace weft {
 namespace {
@@ -88,6 +89,69 @@ TEST(GridBuilder, TrianglesTileEveryCellFacingTheFront) {
         area += 0.5 * glm::length(normal);
     }
     EXPECT_NEAR(area, 4 * scene.cloth.spacing * scene.cloth.spacing, 1e-15);
+}
+
+}  // namespace
+}  // namespace weft
+
+namespace weft {
+namespace {
+
+Scene offset_scene(int rows, int cols) {
+    Scene scene;
+    scene.cloth.rows = rows;
+    scene.cloth.cols = cols;
+    scene.cloth.spacing = 0.1;
+    scene.cloth.layout = Layout::offset;
+    scene.shear.enabled = true;
+    scene.bend.enabled = true;
+    return scene;
+}
+
+TEST(OffsetBuilder, StructuralSpringsAllHaveTheSpacingAsRestLength) {
+    const Cloth cloth = build_offset_cloth(offset_scene(9, 8));
+    const double expected[] = {0.1, 0.1 * std::sqrt(3.0), 0.2};  // structural, shear, bend
+    for (const SpringGroup& group : cloth.spring_groups) {
+        ASSERT_FALSE(group.springs.empty());
+        for (const Spring& s : group.springs)
+            EXPECT_NEAR(s.rest_length, expected[static_cast<int>(group.family)], 1e-15)
+                << spring_family_name(group.family) << " " << s.i << "-" << s.j;
+    }
+}
+
+TEST(OffsetBuilder, InnerParticlesHaveSixNeighboursOfEachFamily) {
+    const Cloth cloth = build_offset_cloth(offset_scene(9, 9));
+    for (const SpringGroup& group : cloth.spring_groups) {
+        std::vector<int> degree(cloth.particle_count(), 0);
+        for (const Spring& s : group.springs) ++degree[s.i], ++degree[s.j];
+        EXPECT_EQ(degree[4 * 9 + 4], 6) << spring_family_name(group.family);  // the centre
+        EXPECT_EQ(degree[5 * 9 + 4], 6) << spring_family_name(group.family);  // an odd row
+    }
+}
+
+TEST(OffsetBuilder, TrianglesAreEquilateralFrontFacingAndTileTheSheet) {
+    const Cloth cloth = build_offset_cloth(offset_scene(7, 6));
+    // Every row pair holds 2 (cols - 1) triangles.
+    ASSERT_EQ(cloth.triangles.size(), 6u * 2 * 5);
+    double area = 0.0;
+    for (const Triangle& t : cloth.triangles) {
+        const Vec3 a = cloth.positions[t.a], b = cloth.positions[t.b], c = cloth.positions[t.c];
+        for (double side : {glm::length(b - a), glm::length(c - b), glm::length(a - c)})
+            EXPECT_NEAR(side, 0.1, 1e-15);
+        const Vec3 normal = glm::cross(b - a, c - a);
+        EXPECT_GT(normal.z, 0.0);
+        area += 0.5 * glm::length(normal);
+    }
+    EXPECT_NEAR(area, 60 * std::sqrt(3.0) / 4.0 * 0.01, 1e-12);
+}
+
+TEST(OffsetBuilder, TheSimulationRunsTheOffsetLayout) {
+    Scene scene = offset_scene(12, 12);
+    scene.forces.air_drag = 0.02;
+    Simulation simulation(scene);
+    EXPECT_EQ(simulation.cloth().spring_groups[0].springs.size(),
+              build_offset_cloth(scene).spring_groups[0].springs.size());
+    for (int s = 0; s < 2000; ++s) ASSERT_FALSE(simulation.step().diverged());
 }
 
 }  // namespace

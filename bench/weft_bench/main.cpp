@@ -2,6 +2,7 @@
 //   weft-bench precision [SCENE.toml]... [--set K=V]... [--out DIR] [--repeats N]
 //   weft-bench stability [SCENE.toml] [--sweep grid|mass|stiffness]... [--set K=V]...
 //                        [--out DIR] [--duration SECONDS]
+//   weft-bench throughput [SCENE.toml] [--set K=V]... [--out DIR]
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -9,6 +10,7 @@
 
 #include "precision_study.h"
 #include "stability_study.h"
+#include "throughput_study.h"
 #include "study.h"
 
 namespace {
@@ -66,6 +68,10 @@ int main(int argc, char** argv) {
         const std::string scene = scenes.empty() ? scenes_dir + "/hanging_sheet.toml" : scenes[0];
         return weft::bench::run_stability_study({scene, overrides, sweeps, out_dir, duration});
     }
-    if (study == "throughput") return usage("throughput is not built yet (issue 6)");
+    if (study == "throughput") {
+        if (scenes.size() > 1) return usage("throughput takes one scene");
+        const std::string scene = scenes.empty() ? scenes_dir + "/hanging_sheet.toml" : scenes[0];
+        return weft::bench::run_throughput_study({scene, overrides, out_dir});
+    }
     return usage(("unknown study '" + study + "'").c_str());
 }

@@ -32,7 +32,11 @@ struct SpringGroup {
     SpringFamily family = SpringFamily::structural;
     double stiffness = 0.0;  // N/m
     double damping = 0.0;    // N·s/m, acts on the relative velocity along the spring
-    std::vector<Spring> springs;
+    std::vector<Spring> springs;  // sorted by colour (spring_coloring.h)
+    // springs[colour_starts[k] .. colour_starts[k+1]) is colour k: no two of its springs share
+    // a particle. The last entry is where springs that fit no colour start; those are applied
+    // one by one. Empty: not coloured, everything is applied one by one.
+    std::vector<std::uint32_t> colour_starts;
 };
 
 struct Triangle {

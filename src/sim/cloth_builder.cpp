@@ -1,5 +1,7 @@
 #include "sim/cloth_builder.h"
 
+#include "sim/spring_coloring.h"
+
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -36,6 +38,7 @@ SpringGroup make_group(SpringFamily family, const SpringFamilySpec& spec, const 
             }
         }
     }
+    colour_springs(group, cloth.particle_count());
     return group;
 }
 

@@ -5,15 +5,19 @@
 
 namespace weft {
 
-void accumulate_spring_forces(const SpringGroup& group, std::span<const Vec3> positions,
-                              std::span<const Vec3> velocities, std::span<Vec3> forces) {
+namespace {
+
+// A colour is split between threads only when it is big enough to pay for the hand-off.
+constexpr std::size_t min_springs_per_parallel_colour = 2048;
+
+void apply_springs(const SpringGroup& group, std::size_t begin, std::size_t end, const Vec3* x,
+                   const Vec3* v, Vec3* f) {
     // Hoist the group's material and the base pointers out of the loop.
     const double stiffness = group.stiffness;
     const double damping = group.damping;
-    const Vec3* x = positions.data();
-    const Vec3* v = velocities.data();
-    Vec3* f = forces.data();
-    for (const Spring& spring : group.springs) {
+    const Spring* springs = group.springs.data();
+    for (std::size_t s = begin; s < end; ++s) {
+        const Spring& spring = springs[s];
         const Vec3 d = x[spring.j] - x[spring.i];
         const double length = std::sqrt(glm::dot(d, d));
         if (length <= 0.0) continue;  // coincident ends: no direction to push along
@@ -27,8 +31,34 @@ void accumulate_spring_forces(const SpringGroup& group, std::span<const Vec3> po
     }
 }
 
+}  // namespace
+
+void accumulate_spring_forces(const SpringGroup& group, std::span<const Vec3> positions,
+                              std::span<const Vec3> velocities, std::span<Vec3> forces,
+                              WorkerPool* pool) {
+    const Vec3* x = positions.data();
+    const Vec3* v = velocities.data();
+    Vec3* f = forces.data();
+    if (group.colour_starts.empty()) {
+        apply_springs(group, 0, group.springs.size(), x, v, f);
+        return;
+    }
+    const bool threaded = pool && pool->thread_count() > 1;
+    for (std::size_t k = 0; k + 1 < group.colour_starts.size(); ++k) {
+        const std::size_t begin = group.colour_starts[k], end = group.colour_starts[k + 1];
+        if (threaded && end - begin >= min_springs_per_parallel_colour) {
+            pool->parallel_for(end - begin, [&](std::size_t lo, std::size_t hi) {
+                apply_springs(group, begin + lo, begin + hi, x, v, f);
+            });
+        } else {
+            apply_springs(group, begin, end, x, v, f);
+        }
+    }
+    apply_springs(group, group.colour_starts.back(), group.springs.size(), x, v, f);
+}
+
 void accumulate_forces(const Cloth& cloth, const ForceField& field, std::span<const Vec3> positions,
-                       std::span<const Vec3> velocities, std::span<Vec3> forces) {
+                       std::span<const Vec3> velocities, std::span<Vec3> forces, WorkerPool* pool) {
     const std::size_t count = positions.size();
     const double* mass = cloth.masses.data();
     const Vec3* v = velocities.data();
@@ -41,7 +71,7 @@ void accumulate_forces(const Cloth& cloth, const ForceField& field, std::span<co
         for (std::size_t p = 0; p < count; ++p) f[p] = mass[p] * field.gravity;
     }
     for (const SpringGroup& group : cloth.spring_groups)
-        accumulate_spring_forces(group, positions, velocities, forces);
+        accumulate_spring_forces(group, positions, velocities, forces, pool);
     if (!field.colliders.empty())
         accumulate_repulsion_forces(field.colliders, cloth, positions, velocities, forces);
     if (field.drag && field.drag->active())

@@ -7,6 +7,7 @@
 #include "sim/cloth.h"
 #include "sim/colliders.h"
 #include "sim/drag.h"
+#include "sim/worker_pool.h"
 
 namespace weft {
 
@@ -31,11 +32,16 @@ struct ForceField {
 //
 // Forces on pinned particles are computed like any other; integrators ignore them through
 // the zero inverse mass. A spring of zero length has no direction and exerts no force.
+//
+// With a pool, each spring colour is split between its threads; the result is the same bit
+// for bit whatever the number of threads (each particle gets its forces colour by colour).
 void accumulate_forces(const Cloth& cloth, const ForceField& field, std::span<const Vec3> positions,
-                       std::span<const Vec3> velocities, std::span<Vec3> forces);
+                       std::span<const Vec3> velocities, std::span<Vec3> forces,
+                       WorkerPool* pool = nullptr);
 
 // Only the internal (spring) forces: the part that must conserve momentum.
 void accumulate_spring_forces(const SpringGroup& group, std::span<const Vec3> positions,
-                              std::span<const Vec3> velocities, std::span<Vec3> forces);
+                              std::span<const Vec3> velocities, std::span<Vec3> forces,
+                              WorkerPool* pool = nullptr);
 
 }  // namespace weft

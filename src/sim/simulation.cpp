@@ -29,13 +29,20 @@ Simulation::Simulation(const Scene& scene)
       step_function_(step_function(scene.solver.integrator)),
       dt_(scene.solver.dt) {
     if (auto why = unsupported_feature(scene)) throw std::invalid_argument(*why);
+    set_thread_count(default_thread_count());
     reset();
+}
+
+void Simulation::set_thread_count(int threads) {
+    pool_ = std::make_shared<WorkerPool>(threads);
+    workspace_.pool = pool_.get();
 }
 
 void Simulation::reset() {
     cloth_ = build_cloth(scene_);
     set_force_field(scene_.forces.gravity, scene_.forces.air_drag, scene_.forces.wind);
     workspace_.resize(cloth_.particle_count());
+    workspace_.pool = pool_.get();
     drag_ = DragHandle{};
     colliders_ = make_colliders(scene_.colliders);
     has_repulsion_ = std::any_of(colliders_.begin(), colliders_.end(), [](const Collider& c) {

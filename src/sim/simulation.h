@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -56,6 +57,11 @@ class Simulation {
     Integrator integrator() const { return integrator_; }
     double dt() const { return dt_; }
 
+    // Threads for the force pass (default: WEFT_THREADS or the machine's). Results are the
+    // same bit for bit whatever the count.
+    void set_thread_count(int threads);
+    int thread_count() const { return pool_->thread_count(); }
+
     void set_integrator(Integrator integrator);
     void set_dt(double dt);
     // Live changes of the model (the demo's panel). The scene() kept here follows them, so a
@@ -99,6 +105,7 @@ class Simulation {
     StepFunction step_function_;
     double dt_;
     IntegratorWorkspace workspace_;
+    std::shared_ptr<WorkerPool> pool_;  // shared by copies, which are never stepped at once
     DragHandle drag_;
     std::vector<Collider> colliders_;
     bool has_repulsion_ = false;  // any collider with the repulsion response

@@ -14,6 +14,6 @@ namespace weft {
 
 // Gauss–Seidel passes over all springs until none is over the limit (a pass can stretch a
 // neighbour again) or `max_passes` is reached. Returns the number of corrections made.
-std::size_t limit_strain(Cloth& cloth, double max_stretch, double dt, int max_passes = 8);
+std::size_t limit_strain(Cloth& cloth, double max_stretch, double dt, int max_passes = 16);
 
 }  // namespace weft

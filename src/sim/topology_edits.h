@@ -17,9 +17,9 @@ inline std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
                  : (static_cast<std::uint64_t>(b) << 32) | a;
 }
 
-// Removes every triangle one of whose edges is in `removed_edges` (keys from edge_key; the
-// vector is sorted here).
-void remove_triangles_on_edges(Cloth& cloth, std::vector<std::uint64_t>& removed_edges);
+// After springs were removed: removes every triangle one of whose edges is in
+// `removed_edges` (keys from edge_key; sorted here), and colours the springs anew.
+void after_springs_removed(Cloth& cloth, std::vector<std::uint64_t>& removed_edges);
 
 // Removes every spring for which `should_remove(spring)` is true, judging all of them on the
 // current state before removing any, and then every triangle one of whose edges was a
@@ -37,7 +37,7 @@ std::size_t remove_springs_if(Cloth& cloth, Predicate should_remove) {
             return true;
         });
     }
-    if (!removed_edges.empty()) remove_triangles_on_edges(cloth, removed_edges);
+    if (!removed_edges.empty()) after_springs_removed(cloth, removed_edges);
     return removed_edges.size();
 }
 

@@ -11,7 +11,7 @@ void IntegratorWorkspace::resize(std::size_t particle_count) {
 
 void evaluate_forces(const Cloth& cloth, const ForceField& field, std::span<const Vec3> positions,
                      std::span<const Vec3> velocities, IntegratorWorkspace& work) {
-    accumulate_forces(cloth, field, positions, velocities, work.forces);
+    accumulate_forces(cloth, field, positions, velocities, work.forces, work.pool);
     ++work.force_evaluations;
 }
 

@@ -46,6 +46,7 @@ struct IntegratorWorkspace {
     double implicit_last_relative_residual = 0.0;
     bool history_valid = false;
     std::uint64_t force_evaluations = 0;  // total calls of the force pass, for cost studies
+    WorkerPool* pool = nullptr;           // threads for the force pass (owned by Simulation)
 
     void resize(std::size_t particle_count);
 };

@@ -1,0 +1,51 @@
+// WorkerPool: a few persistent threads that run the slices of one parallel loop and wait
+// for the next. Used by the force pass, which runs one loop per spring colour, so the
+// hand-off must be cheap: workers spin briefly on a generation counter before sleeping.
+//
+// Results never depend on the number of threads: callers split work so that each item is
+// written by exactly one slice, and the split itself does not change the arithmetic.
+#pragma once
+
+#include <atomic>
+#include <condition_variable>
+#include <cstddef>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace weft {
+
+class WorkerPool {
+public:
+    // `threads` counts the calling thread too: 1 means no extra threads at all.
+    explicit WorkerPool(int threads);
+    ~WorkerPool();
+    WorkerPool(const WorkerPool&) = delete;
+    WorkerPool& operator=(const WorkerPool&) = delete;
+
+    int thread_count() const { return static_cast<int>(workers_.size()) + 1; }
+
+    // Runs body(begin, end) over [0, count) split into thread_count() contiguous slices,
+    // the calling thread taking the first; returns when all are done.
+    void parallel_for(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body);
+
+private:
+    void worker_loop(int index);
+    void run_slice(int slice);
+
+    std::vector<std::thread> workers_;
+    const std::function<void(std::size_t, std::size_t)>* body_ = nullptr;
+    std::size_t count_ = 0;
+    std::atomic<std::uint64_t> generation_{0};
+    std::atomic<int> remaining_{0};
+    std::atomic<bool> stopping_{false};
+    std::mutex mutex_;
+    std::condition_variable wake_;
+};
+
+// Threads to use by default: the WEFT_THREADS environment variable if set (>= 1), else the
+// machine's hardware threads.
+int default_thread_count();
+
+}  // namespace weft

@@ -9,6 +9,10 @@ packages=(
   libtomlplusplus-dev            # scene files
   libglm-dev                     # vector maths
   libgtest-dev                   # tests
+  libsdl2-dev libimgui-dev       # the window and its parameter panel
+  libstb-dev                     # PNG writing
+  libbenchmark-dev               # micro-benchmarks
+  xvfb xdotool                   # the end-to-end test drives the real window
 )
 
 missing=()

@@ -85,8 +85,8 @@ std::variant<CommandLine, CommandLineError> parse_command_line(
         if (!line.scene_path) return CommandLineError{"--headless", "needs a scene file"};
         if (!line.steps) return CommandLineError{"--headless", "needs --steps N"};
     } else {
+        // The window takes --dump (written when it closes) and --size (its size).
         const char* headless_only = line.steps             ? "--steps"
-                                    : line.dump_path       ? "--dump"
                                     : line.screenshot_path ? "--screenshot"
                                                            : nullptr;
         if (headless_only) return CommandLineError{headless_only, "only applies with --headless"};
@@ -103,6 +103,8 @@ const char* usage_text() {
            "  --set KEY=VALUE   override a scene key by its dotted path, e.g. solver.dt=0.0005\n"
            "  --steps N         run exactly N steps of the scene's dt (headless)\n"
            "  --dump FILE       write row,col,x,y,z,vx,vy,vz per particle after the run\n"
+           "                    (in the window: when it closes)\n"
+           "  --size WxH        screenshot size, or the window's (default 1280x720)\n"
            "\n"
            "exit status: 0 done, 2 bad input, 3 the simulation diverged\n";
 }

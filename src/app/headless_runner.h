@@ -1,8 +1,13 @@
-// Runs a scene without a window: the --headless mode, and the stand-in for the demo until
-// the window exists. Returns the process exit status (0 done, 2 bad input, 3 diverged).
+// Runs a scene without a window: the --headless mode. Returns the process exit status
+// (0 done, 2 bad input, 3 diverged).
 #pragma once
 
+#include <optional>
+#include <string>
+#include <vector>
+
 #include "app/command_line.h"
+#include "sim/scene.h"
 
 namespace weft {
 
@@ -10,11 +15,11 @@ inline constexpr int exit_ok = 0;
 inline constexpr int exit_bad_input = 2;
 inline constexpr int exit_diverged = 3;
 
+// Loads and checks a scene; prints warnings and the error (and returns nothing) when bad.
+std::optional<Scene> load_checked_scene(const std::string& path,
+                                        const std::vector<std::string>& overrides);
+
 // weft --headless SCENE --steps N [--dump FILE]: exactly N steps of the scene's dt.
 int run_headless(const CommandLine& command_line);
-
-// weft [SCENE]: until the SDL window exists, simulates a few seconds of the scene and prints
-// how it settles.
-int run_text_preview(const CommandLine& command_line, const char* default_scene_path);
 
 }  // namespace weft

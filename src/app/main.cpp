@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "app/command_line.h"
+#include "app/demo_window.h"
 #include "app/headless_runner.h"
 
 int main(int argc, char** argv) {
@@ -22,7 +23,7 @@ int main(int argc, char** argv) {
     }
     try {
         if (command_line.headless) return weft::run_headless(command_line);
-        return weft::run_text_preview(command_line, WEFT_DEFAULT_SCENE);
+        return weft::app::run_demo_window(command_line, WEFT_DEFAULT_SCENE);
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr, "error: out of memory\n");
         return weft::exit_bad_input;

@@ -120,6 +120,15 @@ void Simulation::set_force_field(const Vec3d& gravity, double air_drag, const Ve
     workspace_.history_valid = false;
 }
 
+void Simulation::set_particle_mass(double mass) {
+    scene_.cloth.particle_mass = mass;
+    for (std::size_t p = 0; p < cloth_.particle_count(); ++p) {
+        cloth_.masses[p] = mass;
+        if (!cloth_.is_pinned(p)) cloth_.inverse_masses[p] = 1.0 / mass;
+    }
+    workspace_.history_valid = false;
+}
+
 void Simulation::set_tear_limit(std::optional<double> max_stretch) {
     scene_.tear_max_stretch = max_stretch;
 }

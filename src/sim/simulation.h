@@ -68,6 +68,7 @@ class Simulation {
     // reset() restarts with the changed parameters.
     void set_spring_material(SpringFamily family, double stiffness, double damping);
     void set_force_field(const Vec3d& gravity, double air_drag, const Vec3d& wind);
+    void set_particle_mass(double mass);  // kg, every particle; pins stay pinned
     void set_tear_limit(std::optional<double> max_stretch);
     void set_strain_limit(std::optional<double> max_stretch);
     const std::vector<Collider>& colliders() const { return colliders_; }

@@ -1,0 +1,25 @@
+#include "app/step_clock.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace weft::app {
+
+StepClock::Plan StepClock::advance(double elapsed, double dt, double seconds_per_step) {
+    Plan plan;
+    // A frame longer than a quarter second (a window drag, a debugger) is not caught up.
+    owed_ += std::min(std::max(elapsed, 0.0), 0.25);
+    const auto wanted = static_cast<long long>(std::floor(owed_ / dt));
+    long long affordable = wanted;
+    if (seconds_per_step > 0.0)
+        affordable = std::max<long long>(1, static_cast<long long>(budget_ / seconds_per_step));
+    plan.steps = static_cast<int>(std::min({wanted, affordable, 100000LL}));
+    owed_ -= plan.steps * dt;
+    if (plan.steps < wanted) {
+        plan.behind = true;
+        owed_ = std::fmod(owed_, dt);  // drop what cannot be afforded rather than owe it
+    }
+    return plan;
+}
+
+}  // namespace weft::app

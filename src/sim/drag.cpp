@@ -34,7 +34,7 @@ void accumulate_drag_forces(const DragHandle& drag, const Cloth& cloth,
     for (std::size_t k = 0; k < drag.particles.size(); ++k) {
         const std::uint32_t p = drag.particles[k];
         const Vec3 goal = drag.target + drag.offsets[k];
-        Vec3 acceleration = omega * omega * (goal - positions[p]) - 2.0 * omega * velocities[p];
+        Vec3 acceleration = omega * omega * (goal - positions[p]) - omega * velocities[p];
         const double magnitude = glm::length(acceleration);
         if (magnitude > drag.max_acceleration) acceleration *= drag.max_acceleration / magnitude;
         forces[p] += (drag.weights[k] * cloth.masses[p]) * acceleration;

@@ -20,10 +20,13 @@ struct DragHandle {
     std::vector<Vec3> offsets;             // m, particle minus grab point when grabbed
     Vec3 target{0.0};                      // m, where the grab point is pulled to
     // The pull on a particle of mass m and weight w is
-    //   f = w m (ω² (target + offset - x) - 2 ω v),  |f| <= w m max_acceleration:
-    // a critically damped spring of angular frequency ω, capped.
-    double angular_frequency = 100.0;  // rad/s: follows the cursor within ~0.03 s
-    double max_acceleration = 1000.0;  // m/s², about 100 g
+    //   f = w m (ω² (target + offset - x) - ω v),  |f| <= w m max_acceleration:
+    // a spring of angular frequency ω damped at half the critical rate, capped. Stiff, so the
+    // hand holds the cloth where the cursor is (Simulation::start_drag lowers ω for large
+    // steps: h ω <= 0.5 keeps h²ω² + 2 h ω well inside symplectic Euler's bound of 4).
+    double angular_frequency = 300.0;  // rad/s: follows the cursor within ~0.01 s
+    double max_acceleration =
+        5000.0;  // m/s², about 500 g: enough to pull a sheet, not to explode it
 
     bool active() const { return !particles.empty(); }
 };

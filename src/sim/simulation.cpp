@@ -144,6 +144,7 @@ Collider& Simulation::edit_collider(std::size_t index) {
 
 void Simulation::start_drag(DragHandle drag) {
     drag_ = std::move(drag);
+    drag_.angular_frequency = std::min(drag_.angular_frequency, 0.5 / dt_);
     workspace_.history_valid = false;
 }
 

@@ -1,0 +1,36 @@
+// The demo's step clock: simulated time keeps pace with the wall clock, within a budget.
+#include <gtest/gtest.h>
+
+#include "app/step_clock.h"
+
+namespace weft::app {
+namespace {
+
+TEST(StepClock, SimulatedTimeKeepsPaceWithTheWallClock) {
+    StepClock clock;
+    long long steps = 0;
+    for (int frame = 0; frame < 600; ++frame) {  // 10 s at 60 fps, fast steps
+        const StepClock::Plan plan = clock.advance(1.0 / 60.0, 0.001, 1e-6);
+        EXPECT_FALSE(plan.behind);
+        steps += plan.steps;
+    }
+    EXPECT_NEAR(static_cast<double>(steps) * 0.001, 10.0, 0.001 + 1e-9);  // within one step
+    EXPECT_LT(clock.owed(), 0.001);
+}
+
+TEST(StepClock, ASlowMachineFallsBehindInsteadOfSpiralling) {
+    StepClock clock(0.02);  // 20 ms of stepping per frame at most
+    const StepClock::Plan plan = clock.advance(1.0 / 60.0, 0.001, 0.005);  // 5 ms per step
+    EXPECT_EQ(plan.steps, 4);  // not the 16 that real time would need
+    EXPECT_TRUE(plan.behind);
+    EXPECT_LT(clock.owed(), 0.001);  // the rest is dropped, not owed to the next frame
+}
+
+TEST(StepClock, ALongStallIsNotCaughtUp) {
+    StepClock clock;
+    const StepClock::Plan plan = clock.advance(10.0, 0.001, 1e-6);  // a 10 s pause
+    EXPECT_EQ(plan.steps, 250);                                     // a quarter second at most
+}
+
+}  // namespace
+}  // namespace weft::app

@@ -1,0 +1,102 @@
+#!/usr/bin/env bash
+# End-to-end test of the real weft window under Xvfb, driven by xdotool:
+#   1. the camera keys change the view (two F12 screenshots differ);
+#   2. space + mouse on the cloth pulls the cloth where the mouse went (state dumped when
+#      the window closes, while still held, against an undisturbed run);
+#   3. space + mouse on empty background leaves the cloth as an undisturbed run leaves it.
+# Usage: window_e2e_test.sh WEFT PNG_DIFF SOURCE_DIR
+set -uo pipefail
+weft=$(realpath "$1")
+png_diff=$(realpath "$2")
+scene=$(realpath "$3")/tests/app/e2e_sheet.toml
+for tool in Xvfb xdotool; do
+  command -v "$tool" >/dev/null || { echo "FAIL: $tool is missing (scripts/setup.sh installs it)"; exit 1; }
+done
+work=$(mktemp -d)
+display=""
+cleanup() {
+  [ -n "${xvfb_pid:-}" ] && kill "$xvfb_pid" 2>/dev/null
+  rm -rf "$work"
+}
+trap cleanup EXIT
+# A free display number, and an X server on it.
+for n in $(seq 90 130); do
+  if [ ! -e "/tmp/.X$n-lock" ] && [ ! -e "/tmp/.X11-unix/X$n" ]; then display=":$n"; break; fi
+done
+[ -n "$display" ] || { echo "FAIL: no free X display"; exit 1; }
+Xvfb "$display" -screen 0 1024x768x24 -nolisten tcp >/dev/null 2>&1 &
+xvfb_pid=$!
+for _ in $(seq 50); do [ -e "/tmp/.X11-unix/X${display#:}" ] && break; sleep 0.1; done
+export DISPLAY=$display
+failures=0
+passes=0
+check() { if "$@"; then passes=$((passes + 1)); else echo "FAIL: $*"; failures=$((failures + 1)); fi; }
+
+# Starts weft in $work/$1, waits for its window; sets $weft_pid and $window.
+start_weft() {
+  mkdir -p "$work/$1"
+  (cd "$work/$1" && exec "$weft" "$scene" --size 800x600 --dump "$work/$1/state.csv" >"$work/$1/out.log" 2>&1) &
+  weft_pid=$!
+  window=$(timeout 20 xdotool search --sync --name "weft - e2e sheet" | head -1)
+  [ -n "$window" ] || { echo "FAIL: no weft window appeared"; cat "$work/$1/out.log"; exit 1; }
+  sleep 2.5  # the sheet settles
+}
+quit_weft() {
+  xdotool key --window "$window" Escape
+  for _ in $(seq 100); do kill -0 "$weft_pid" 2>/dev/null || break; sleep 0.1; done
+  wait "$weft_pid"
+}
+# x of particle (row, col) from a dump
+particle_x() { awk -F, -v r="$2" -v c="$3" 'NR > 1 && $1 == r && $2 == c { print $3 }' "$1"; }
+
+# --- 1. an undisturbed run, and the camera keys ---------------------------------------------
+start_weft rest
+xdotool key --window "$window" F12
+sleep 0.5
+xdotool keydown --window "$window" w; sleep 0.6; xdotool keyup --window "$window" w
+xdotool keydown --window "$window" Left; sleep 0.4; xdotool keyup --window "$window" Left
+sleep 0.3
+xdotool key --window "$window" F12
+sleep 0.5
+xdotool key --window "$window" Home   # back to the scene's camera before quitting
+quit_weft
+shots=("$work"/rest/weft-screenshot-*.png)
+check test "${#shots[@]}" -eq 2
+changed=$("$png_diff" "${shots[0]}" "${shots[1]}")
+echo "camera keys changed $changed of the pixels"
+check awk -v f="$changed" 'BEGIN { exit !(f > 0.05) }'
+check test -s "$work/rest/state.csv"
+
+# --- 2. space + mouse on the cloth pulls it ---------------------------------------------------
+# The camera looks straight at the sheet's centre from 1.6 m with a 50° field of view: about
+# 402 pixels per metre at the sheet, centre at (400, 300). Particle (12, 7) is at
+# (-0.025, -0.2) m: pixel (390, 390). The mouse drags it 0.5 m to the right.
+start_weft drag
+xdotool mousemove --window "$window" 390 390
+sleep 0.2
+xdotool keydown --window "$window" space
+for step in $(seq 1 10); do xdotool mousemove --window "$window" $((390 + 20 * step)) 390; sleep 0.05; done
+sleep 1.0
+quit_weft   # still holding: the dump shows the cloth where the hand holds it
+xdotool keyup space
+rest_x=$(particle_x "$work/rest/state.csv" 12 7)
+drag_x=$(particle_x "$work/drag/state.csv" 12 7)
+echo "dragged particle x: at rest $rest_x m, after the drag $drag_x m"
+check awk -v a="$rest_x" -v b="$drag_x" 'BEGIN { exit !(b - a > 0.15) }'
+
+# --- 3. space + mouse on the background grabs nothing -----------------------------------------
+start_weft miss
+xdotool mousemove --window "$window" 700 120
+sleep 0.2
+xdotool keydown --window "$window" space
+for step in $(seq 1 10); do xdotool mousemove --window "$window" 700 $((120 + 30 * step)); sleep 0.05; done
+sleep 0.5
+xdotool keyup --window "$window" space
+quit_weft
+largest=$(paste -d, <(tail -n +2 "$work/rest/state.csv") <(tail -n +2 "$work/miss/state.csv") |
+  awk -F, '{ for (k = 3; k <= 5; k++) { d = $k - $(k + 8); if (d < 0) d = -d; if (d > m) m = d } } END { print m + 0 }')
+echo "missed drag: largest difference from the undisturbed run $largest m"
+check awk -v d="$largest" 'BEGIN { exit !(d < 0.002) }'
+
+echo "$passes passed, $failures failed"
+[ "$failures" -eq 0 ]

@@ -306,6 +306,9 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
     ImGui_ImplSDLRenderer_Init(w.renderer);
 
     Hand hand;
+    const double started = now_seconds();
+    long long frames = 0;
+    double total_sim_seconds = 0.0, total_raster_seconds = 0.0;
     double last = now_seconds();
     double seconds_per_step = 0.0;
     bool running = true;
@@ -354,6 +357,9 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
         present_frame(state, w);
         stats.raster_seconds = now_seconds() - raster_start;
         ImGui_ImplSDLRenderer_RenderDrawData(ImGui::GetDrawData());
+        ++frames;
+        total_sim_seconds += stats.sim_seconds;
+        total_raster_seconds += stats.raster_seconds;
         if (w.save_window_next_frame) {
             save_window_screenshot(state, w);
             w.save_window_next_frame = false;
@@ -361,6 +367,11 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
         SDL_RenderPresent(w.renderer);
     }
 
+    const double seconds = now_seconds() - started;
+    if (frames > 0)
+        std::printf("%lld frames in %.1f s: %.1f fps, %.2f ms stepping and %.2f ms drawing per frame\n", frames,
+                    seconds, static_cast<double>(frames) / seconds, 1e3 * total_sim_seconds / static_cast<double>(frames),
+                    1e3 * total_raster_seconds / static_cast<double>(frames));
     if (command_line.dump_path) {
         std::ofstream dump(*command_line.dump_path, std::ios::binary | std::ios::trunc);
         write_state_csv(state.simulation.cloth(), dump);

@@ -5,6 +5,7 @@
 #include <imgui.h>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -92,13 +93,28 @@ void solver(DemoState& state) {
 
 void materials(DemoState& state) {
     Simulation& sim = state.simulation;
-    for (const SpringGroup& group : sim.cloth().spring_groups) {
-        ImGui::PushID(static_cast<int>(group.family));
-        double stiffness = group.stiffness, damping = group.damping;
-        ImGui::Text("%s springs (%zu)", spring_family_name(group.family), group.springs.size());
+    for (SpringFamily family :
+         {SpringFamily::structural, SpringFamily::shear, SpringFamily::bend}) {
+        const Scene& scene = sim.scene();
+        const SpringFamilySpec& spec = family == SpringFamily::structural ? scene.structural
+                                       : family == SpringFamily::shear    ? scene.shear
+                                                                          : scene.bend;
+        ImGui::PushID(static_cast<int>(family));
+        const SpringGroup* group = sim.cloth().find_group(family);
+        const std::size_t count = group ? group->springs.size() : 0;
+        if (family == SpringFamily::structural) {
+            ImGui::Text("%s springs (%zu)", spring_family_name(family), count);
+        } else {
+            char label[64];
+            std::snprintf(label, sizeof label, "%s springs (%zu)", spring_family_name(family),
+                          count);
+            bool enabled = spec.enabled;
+            if (ImGui::Checkbox(label, &enabled)) sim.set_family_enabled(family, enabled);
+        }
+        double stiffness = spec.stiffness, damping = spec.damping;
         bool changed = slider_log("stiffness (N/m)", stiffness, 1.0, 1e5, "%.0f");
         changed |= slider_log("damping (N s/m)", damping, 1e-4, 10.0, "%.4f");
-        if (changed) sim.set_spring_material(group.family, stiffness, damping);
+        if (changed) sim.set_spring_material(family, stiffness, damping);
         ImGui::PopID();
     }
     double mass_g = sim.scene().cloth.particle_mass * 1e3;
@@ -184,7 +200,7 @@ void scenes(DemoState& state) {
 
 void draw_control_panel(DemoState& state) {
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(390, 0), ImGuiCond_FirstUseEver);
     ImGui::Begin("weft");
     ImGui::TextUnformatted(state.simulation.scene().name.c_str());
     statistics(state);

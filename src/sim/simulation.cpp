@@ -40,6 +40,7 @@ void Simulation::set_thread_count(int threads) {
 
 void Simulation::reset() {
     cloth_ = build_cloth(scene_);
+    switched_off_.clear();
     set_force_field(scene_.forces.gravity, scene_.forces.air_drag, scene_.forces.wind);
     workspace_.resize(cloth_.particle_count());
     workspace_.pool = pool_.get();
@@ -98,18 +99,52 @@ void Simulation::set_dt(double dt) {
     workspace_.history_valid = false;
 }
 
+namespace {
+
+SpringFamilySpec& family_spec(Scene& scene, SpringFamily family) {
+    return family == SpringFamily::structural ? scene.structural
+           : family == SpringFamily::shear    ? scene.shear
+                                              : scene.bend;
+}
+
+}  // namespace
+
 void Simulation::set_spring_material(SpringFamily family, double stiffness, double damping) {
-    SpringFamilySpec& spec = family == SpringFamily::structural ? scene_.structural
-                             : family == SpringFamily::shear    ? scene_.shear
-                                                                : scene_.bend;
+    SpringFamilySpec& spec = family_spec(scene_, family);
     spec.stiffness = stiffness;
     spec.damping = damping;
-    for (SpringGroup& group : cloth_.spring_groups) {
-        if (group.family != family) continue;
-        group.stiffness = stiffness;
-        group.damping = damping;
+    for (auto* groups : {&cloth_.spring_groups, &switched_off_}) {
+        for (SpringGroup& group : *groups) {
+            if (group.family != family) continue;
+            group.stiffness = stiffness;
+            group.damping = damping;
+        }
     }
     workspace_.history_valid = false;  // the carried accelerations came from the old forces
+}
+
+void Simulation::set_family_enabled(SpringFamily family, bool enabled) {
+    SpringFamilySpec& spec = family_spec(scene_, family);
+    if (family == SpringFamily::structural || spec.enabled == enabled) return;
+    spec.enabled = enabled;
+    workspace_.history_valid = false;
+    if (!enabled) {
+        if (auto taken = take_spring_family(cloth_, family))
+            switched_off_.push_back(std::move(*taken));
+        return;
+    }
+    auto kept = std::find_if(switched_off_.begin(), switched_off_.end(),
+                             [&](const SpringGroup& g) { return g.family == family; });
+    if (kept != switched_off_.end()) {
+        SpringGroup group = std::move(*kept);
+        switched_off_.erase(kept);
+        add_spring_family(cloth_, std::move(group));
+        return;
+    }
+    // Never built: as the builder makes it for the intact sheet, with the current material.
+    Cloth intact = build_cloth(scene_);
+    std::optional<SpringGroup> fresh = take_spring_family(intact, family);
+    if (fresh) add_spring_family(cloth_, std::move(*fresh));
 }
 
 void Simulation::set_force_field(const Vec3d& gravity, double air_drag, const Vec3d& wind) {

@@ -10,10 +10,10 @@
 #include "sim/cloth.h"
 #include "sim/colliders.h"
 #include "sim/drag.h"
-#include "sim/self_collision.h"
 #include "sim/force_pass.h"
 #include "sim/integrators/integrator.h"
 #include "sim/scene.h"
+#include "sim/self_collision.h"
 #include "sim/topology_edits.h"
 
 namespace weft {
@@ -68,7 +68,12 @@ class Simulation {
     // reset() restarts with the changed parameters.
     void set_spring_material(SpringFamily family, double stiffness, double damping);
     void set_force_field(const Vec3d& gravity, double air_drag, const Vec3d& wind);
-    void set_particle_mass(double mass);  // kg, every particle; pins stay pinned
+    void set_particle_mass(double mass);
+    // Shear and bend springs on or off (structural springs are always on). Off takes the
+    // family out of the force pass; on brings it back as it was, or, for a family the scene
+    // did not have, builds it where the cloth is still whole (topology_edits.h).
+    void set_family_enabled(SpringFamily family,
+                            bool enabled);  // kg, every particle; pins stay pinned
     void set_tear_limit(std::optional<double> max_stretch);
     void set_strain_limit(std::optional<double> max_stretch);
     const std::vector<Collider>& colliders() const { return colliders_; }
@@ -109,7 +114,8 @@ class Simulation {
     std::shared_ptr<WorkerPool> pool_;  // shared by copies, which are never stepped at once
     DragHandle drag_;
     std::vector<Collider> colliders_;
-    bool has_repulsion_ = false;  // any collider with the repulsion response
+    std::vector<SpringGroup> switched_off_;  // families switched off, kept with their tears
+    bool has_repulsion_ = false;             // any collider with the repulsion response
     std::optional<SelfCollision> self_collision_;
     double time_ = 0.0;
     std::uint64_t steps_taken_ = 0;

@@ -19,6 +19,43 @@ void after_springs_removed(Cloth& cloth, std::vector<std::uint64_t>& removed_edg
     });
 }
 
+std::optional<SpringGroup> take_spring_family(Cloth& cloth, SpringFamily family) {
+    auto& groups = cloth.spring_groups;
+    auto at = std::find_if(groups.begin(), groups.end(),
+                           [&](const SpringGroup& g) { return g.family == family; });
+    if (at == groups.end()) return std::nullopt;
+    SpringGroup taken = std::move(*at);
+    groups.erase(at);
+    return taken;
+}
+
+void add_spring_family(Cloth& cloth, SpringGroup fresh) {
+    if (const SpringGroup* structural = cloth.find_group(SpringFamily::structural);
+        structural && fresh.family != SpringFamily::structural) {
+        // Structural neighbours of every particle, then keep (i, j) if some neighbour k of i
+        // has j as a neighbour too.
+        std::vector<std::vector<std::uint32_t>> neighbours(cloth.particle_count());
+        for (const Spring& s : structural->springs) {
+            neighbours[s.i].push_back(s.j);
+            neighbours[s.j].push_back(s.i);
+        }
+        auto joined_through_one = [&](std::uint32_t i, std::uint32_t j) {
+            for (std::uint32_t k : neighbours[i]) {
+                const auto& of_k = neighbours[k];
+                if (std::find(of_k.begin(), of_k.end(), j) != of_k.end()) return true;
+            }
+            return false;
+        };
+        std::erase_if(fresh.springs,
+                      [&](const Spring& s) { return !joined_through_one(s.i, s.j); });
+    }
+    colour_springs(fresh, cloth.particle_count());
+    auto& groups = cloth.spring_groups;
+    auto at = std::find_if(groups.begin(), groups.end(),
+                           [&](const SpringGroup& g) { return g.family > fresh.family; });
+    groups.insert(at, std::move(fresh));
+}
+
 void set_pinned(Cloth& cloth, std::size_t particle, bool pinned) {
     cloth.inverse_masses[particle] = pinned ? 0.0 : 1.0 / cloth.masses[particle];
     if (pinned) cloth.velocities[particle] = Vec3(0.0);

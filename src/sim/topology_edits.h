@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "sim/cloth.h"
@@ -40,6 +41,15 @@ std::size_t remove_springs_if(Cloth& cloth, Predicate should_remove) {
     if (!removed_edges.empty()) after_springs_removed(cloth, removed_edges);
     return removed_edges.size();
 }
+
+// Switching a spring family off and on while the cloth runs (the demo's panel). Off moves
+// the family's group out of the cloth, so it costs nothing in the force pass; it comes back
+// as it was, tears included. `fresh` is the family as the builder makes it for the intact
+// sheet: only its springs whose ends are still joined through a common structural neighbour
+// are added, so a family switched on after tearing does not sew torn cloth together again
+// (shear and bend springs both span two structural springs, in either layout).
+std::optional<SpringGroup> take_spring_family(Cloth& cloth, SpringFamily family);
+void add_spring_family(Cloth& cloth, SpringGroup fresh);  // group order: by family
 
 // Pins (inverse mass 0, velocity 0) or frees (inverse mass 1/m) one particle.
 void set_pinned(Cloth& cloth, std::size_t particle, bool pinned);

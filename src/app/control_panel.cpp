@@ -39,10 +39,36 @@ const int controls_count = static_cast<int>(std::size(controls_text));
 
 namespace {
 
+// The last refused edit, shown in the panel until the next edit succeeds.
+std::string edit_error;
+
+// Every edit goes through DemoState::change as a --set style override, checked exactly like a
+// scene file: a refused value (one typed past a slider's range with Ctrl+click, say) shows
+// its error and changes nothing.
+void edit(DemoState& state, const std::string& key, const std::string& value) {
+    if (auto error = state.change({key + "=" + value}))
+        edit_error = *error;
+    else
+        edit_error.clear();
+}
+
+std::string number(double value) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.17g", value);
+    return text;
+}
+
+std::string vec3(const Vec3d& v) {
+    char text[80];
+    std::snprintf(text, sizeof text, "[%.17g,%.17g,%.17g]", v[0], v[1], v[2]);
+    return text;
+}
+
+// A logarithmic slider over [low, high]; Ctrl+click types any value, which change() checks.
 bool slider_log(const char* label, double& value, double low, double high, const char* format) {
     float v = static_cast<float>(value);
     if (!ImGui::SliderFloat(label, &v, static_cast<float>(low), static_cast<float>(high), format,
-                            ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
+                            ImGuiSliderFlags_Logarithmic))
         return false;
     value = v;
     return true;
@@ -70,14 +96,15 @@ void statistics(DemoState& state) {
 }
 
 void solver(DemoState& state) {
-    Simulation& sim = state.simulation;
+    const Simulation& sim = state.simulation;
     const char* names[] = {"explicit-euler", "symplectic-euler", "verlet", "velocity-verlet", "rk4",
                            "implicit-euler"};
     int current = static_cast<int>(sim.integrator());
     if (ImGui::Combo("integrator", &current, names, static_cast<int>(std::size(names))))
-        sim.set_integrator(static_cast<Integrator>(current));
+        edit(state, "solver.integrator", names[current]);  // a bare word is taken as a string
     double dt_ms = sim.dt() * 1e3;
-    if (slider_log("dt (ms)", dt_ms, 0.01, 10.0, "%.3f")) sim.set_dt(dt_ms * 1e-3);
+    if (slider_log("dt (ms)", dt_ms, 0.01, 10.0, "%.3f"))
+        edit(state, "solver.dt", number(dt_ms * 1e-3));
     const double limit =
         estimated_step_limit(sim.cloth(), sim.force_field().air_drag, sim.integrator());
     if (limit > 0.0 && std::isfinite(limit)) {
@@ -92,15 +119,15 @@ void solver(DemoState& state) {
 }
 
 void materials(DemoState& state) {
-    Simulation& sim = state.simulation;
     for (SpringFamily family :
          {SpringFamily::structural, SpringFamily::shear, SpringFamily::bend}) {
-        const Scene& scene = sim.scene();
+        const Scene& scene = state.simulation.scene();
         const SpringFamilySpec& spec = family == SpringFamily::structural ? scene.structural
                                        : family == SpringFamily::shear    ? scene.shear
                                                                           : scene.bend;
+        const std::string key = std::string("springs.") + spring_family_name(family);
         ImGui::PushID(static_cast<int>(family));
-        const SpringGroup* group = sim.cloth().find_group(family);
+        const SpringGroup* group = state.simulation.cloth().find_group(family);
         const std::size_t count = group ? group->springs.size() : 0;
         if (family == SpringFamily::structural) {
             ImGui::Text("%s springs (%zu)", spring_family_name(family), count);
@@ -109,55 +136,81 @@ void materials(DemoState& state) {
             std::snprintf(label, sizeof label, "%s springs (%zu)", spring_family_name(family),
                           count);
             bool enabled = spec.enabled;
-            if (ImGui::Checkbox(label, &enabled)) sim.set_family_enabled(family, enabled);
+            if (ImGui::Checkbox(label, &enabled))
+                edit(state, key + ".enabled", enabled ? "true" : "false");
         }
         double stiffness = spec.stiffness, damping = spec.damping;
-        bool changed = slider_log("stiffness (N/m)", stiffness, 1.0, 1e5, "%.0f");
-        changed |= slider_log("damping (N s/m)", damping, 1e-4, 10.0, "%.4f");
-        if (changed) sim.set_spring_material(family, stiffness, damping);
+        if (slider_log("stiffness (N/m)", stiffness, 1.0, 1e5, "%.0f"))
+            edit(state, key + ".stiffness", number(stiffness));
+        if (slider_log("damping (N s/m)", damping, 1e-4, 10.0, "%.4f"))
+            edit(state, key + ".damping", number(damping));
         ImGui::PopID();
     }
-    double mass_g = sim.scene().cloth.particle_mass * 1e3;
+    double mass_g = state.simulation.scene().cloth.particle_mass * 1e3;
     if (slider_log("particle mass (g)", mass_g, 0.1, 1000.0, "%.2f"))
-        sim.set_particle_mass(mass_g * 1e-3);
+        edit(state, "cloth.particle_mass", number(mass_g * 1e-3));
 }
 
 void forces(DemoState& state) {
-    Simulation& sim = state.simulation;
-    ForcesSpec f = sim.scene().forces;
-    bool changed = false;
+    const ForcesSpec& f = state.simulation.scene().forces;
     float gravity = static_cast<float>(f.gravity[1]);
     if (ImGui::SliderFloat("gravity y (m/s2)", &gravity, -30.0f, 5.0f))
-        f.gravity[1] = gravity, changed = true;
-    changed |= slider_log("air drag (N s/m)", f.air_drag, 1e-4, 1.0, "%.4f");
+        edit(state, "forces.gravity", vec3({f.gravity[0], gravity, f.gravity[2]}));
+    double air_drag = f.air_drag;
+    if (slider_log("air drag (N s/m)", air_drag, 1e-4, 1.0, "%.4f"))
+        edit(state, "forces.air_drag", number(air_drag));
     float strength = static_cast<float>(std::hypot(f.wind[0], f.wind[2]));
     float heading = static_cast<float>(std::atan2(f.wind[2], f.wind[0]) * 180.0 / M_PI);
     bool wind_changed = ImGui::SliderFloat("wind (m/s)", &strength, 0.0f, 20.0f);
     wind_changed |= ImGui::SliderFloat("wind heading (deg)", &heading, -180.0f, 180.0f);
-    if (wind_changed) {
-        f.wind[0] = strength * std::cos(heading * M_PI / 180.0);
-        f.wind[2] = strength * std::sin(heading * M_PI / 180.0);
-        changed = true;
+    if (wind_changed)
+        edit(state, "forces.wind",
+             vec3({strength * std::cos(heading * M_PI / 180.0), f.wind[1],
+                   strength * std::sin(heading * M_PI / 180.0)}));
+}
+
+// An optional feature table such as [tearing]: a checkbox for its presence, a slider for its
+// value. Switching it on is an edit like any other; switching it off removes the table, which
+// is always valid.
+void optional_feature(DemoState& state, const char* label, const char* table, const char* key,
+                      std::optional<double> Scene::*member, double shown, double low, double high,
+                      const char* format) {
+    ImGui::PushID(table);
+    const std::optional<double>& value = state.simulation.scene().*member;
+    bool on = value.has_value();
+    double v = value.value_or(shown);
+    const std::string path = std::string(table) + "." + key;
+    if (ImGui::Checkbox(label, &on)) {
+        if (on) {
+            edit(state, path, number(v));
+        } else {
+            Scene without = state.simulation.scene();
+            without.*member = std::nullopt;
+            state.simulation.set_parameters(without);
+            edit_error.clear();
+        }
     }
-    if (changed) sim.set_force_field(f.gravity, f.air_drag, f.wind);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(120);
+    if (slider_log(key, v, low, high, format) && on) edit(state, path, number(v));
+    ImGui::PopID();
 }
 
 void limits(DemoState& state) {
-    Simulation& sim = state.simulation;
-    bool tearing = sim.scene().tear_max_stretch.has_value();
-    double tear = sim.scene().tear_max_stretch.value_or(1.6);
-    bool changed = ImGui::Checkbox("tearing", &tearing);
-    ImGui::SameLine();
-    changed |= slider_log("tear at x rest", tear, 1.05, 5.0, "%.2f");
-    if (changed) sim.set_tear_limit(tearing ? std::optional<double>(tear) : std::nullopt);
-    bool limiting = sim.scene().strain_limit_max_stretch.has_value();
-    double limit = sim.scene().strain_limit_max_stretch.value_or(0.1);
-    changed = ImGui::Checkbox("strain limit", &limiting);
-    ImGui::SameLine();
-    changed |= slider_log("max stretch", limit, 0.01, 1.0, "%.2f");
-    if (changed) sim.set_strain_limit(limiting ? std::optional<double>(limit) : std::nullopt);
-    slider_log("drag radius (m)", state.drag_radius, 0.005, 0.5, "%.3f");
-    if (ImGui::Button("release all pins (U)")) sim.release_all_pins();
+    optional_feature(state, "tearing", "tearing", "max_stretch", &Scene::tear_max_stretch, 1.6,
+                     1.05, 5.0, "%.2f x rest");
+    optional_feature(state, "strain limit", "strain_limit", "max_stretch",
+                     &Scene::strain_limit_max_stretch, 0.1, 0.01, 1.0, "%.2f");
+    optional_feature(state, "self-collision", "self_collision", "thickness",
+                     &Scene::self_collision_thickness, 0.01, 0.002, 0.1, "%.3f m");
+    double radius = state.drag_radius;
+    if (slider_log("drag radius (m)", radius, 0.005, 0.5, "%.3f")) {
+        if (radius > 0.0 && radius <= 10.0)
+            state.drag_radius = radius;
+        else
+            edit_error = "drag radius must be in (0, 10] m, got " + number(radius);
+    }
+    if (ImGui::Button("release all pins (U)")) state.simulation.release_all_pins();
 }
 
 void view_toggles(DemoState& state) {
@@ -210,6 +263,8 @@ void draw_control_panel(DemoState& state) {
     if (ImGui::CollapsingHeader("tearing, limits, pins")) limits(state);
     if (ImGui::CollapsingHeader("view")) view_toggles(state);
     if (ImGui::CollapsingHeader("scenes", ImGuiTreeNodeFlags_DefaultOpen)) scenes(state);
+    if (!edit_error.empty())
+        ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "refused: %s", edit_error.c_str());
     ImGui::TextDisabled("H: help");
     ImGui::End();
 }

@@ -27,16 +27,6 @@ double now_seconds() {
         .count();
 }
 
-// What the mouse and the space bar are doing to the cloth.
-struct Hand {
-    bool dragging = false;
-    Vec3 anchor{0.0};  // m, the grabbed point when grabbed: the drag plane goes through it
-    bool cutting = false;
-    glm::vec2 last_cursor{0.0f};
-};
-
-void say(DemoState& state, const std::string& message);
-
 struct Window {
     SDL_Window* window = nullptr;
     SDL_Renderer* renderer = nullptr;
@@ -55,7 +45,7 @@ void save_window_screenshot(DemoState& state, Window& w) {
                              std::min(height, raster::Framebuffer::max_side));
     if (SDL_RenderReadPixels(w.renderer, nullptr, SDL_PIXELFORMAT_ABGR8888, shot.colours().data(),
                              shot.width() * 4) != 0) {
-        say(state, std::string("window screenshot failed: ") + SDL_GetError());
+        state.say(std::string("window screenshot failed: ") + SDL_GetError());
         return;
     }
     const std::string path = next_screenshot_path(".");
@@ -64,7 +54,7 @@ void save_window_screenshot(DemoState& state, Window& w) {
         std::printf("screenshot: %s\n", path.c_str());
         std::fflush(stdout);
     } else {
-        say(state, "screenshot failed: " + error);
+        state.say("screenshot failed: " + error);
     }
 }
 
@@ -74,35 +64,7 @@ glm::vec2 cursor() {
     return {static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f};
 }
 
-void say(DemoState& state, const std::string& message) {
-    state.message = message;
-    state.message_until = now_seconds() + 4.0;
-    std::fprintf(stderr, "%s\n", message.c_str());
-}
-
 // ---- input -----------------------------------------------------------------------------
-
-void start_drag(DemoState& state, const Window& w) {
-    auto hit = cloth_under_cursor(state.simulation.cloth(), state.rig.camera(),
-                                  w.framebuffer.width(), w.framebuffer.height(), cursor());
-    if (!hit) return;  // only grabs when the cursor is on the cloth
-    state.simulation.start_drag(grab_cloth(state.simulation.cloth(), *hit, state.drag_radius));
-}
-
-void move_drag(DemoState& state, const Window& w, const Hand& hand) {
-    if (!state.simulation.drag().active()) return;
-    if (auto target = point_on_grab_plane(state.rig.camera(), w.framebuffer.width(),
-                                          w.framebuffer.height(), cursor(), hand.anchor))
-        state.simulation.move_drag_target(*target);
-}
-
-void toggle_pin_under_cursor(DemoState& state, const Window& w) {
-    auto hit = cloth_under_cursor(state.simulation.cloth(), state.rig.camera(),
-                                  w.framebuffer.width(), w.framebuffer.height(), cursor());
-    if (hit)
-        state.simulation.set_pinned(hit->particle,
-                                    !state.simulation.cloth().is_pinned(hit->particle));
-}
 
 void save_screenshot(DemoState& state, const Window& w) {
     const std::string path = next_screenshot_path(".");
@@ -110,14 +72,18 @@ void save_screenshot(DemoState& state, const Window& w) {
     if (raster::write_png(w.framebuffer, path, &error)) {
         std::printf("screenshot: %s\n", path.c_str());
         std::fflush(stdout);
-        say(state, "saved " + path);
+        state.say("saved " + path);
     } else {
-        say(state, "screenshot failed: " + error);
+        state.say("screenshot failed: " + error);
     }
 }
 
+ViewSize view_size(const Window& w) {
+    return {w.framebuffer.width(), w.framebuffer.height()};
+}
+
 // Returns false when the user quits.
-bool handle_event(const SDL_Event& event, DemoState& state, Window& w, Hand& hand) {
+bool handle_event(const SDL_Event& event, DemoState& state, Window& w) {
     ImGui_ImplSDL2_ProcessEvent(&event);
     const ImGuiIO& io = ImGui::GetIO();
     if (event.type == SDL_QUIT) return false;
@@ -150,51 +116,34 @@ bool handle_event(const SDL_Event& event, DemoState& state, Window& w, Hand& han
                 state.rig = state.initial_rig;
                 break;
             case SDLK_t:
-                toggle_pin_under_cursor(state, w);
+                state.toggle_pin(cursor(), view_size(w));
                 break;
             case SDLK_u:
                 state.simulation.release_all_pins();
                 break;
             case SDLK_SPACE:
-                start_drag(state, w);
-                if (state.simulation.drag().active())
-                    hand.dragging = true, hand.anchor = state.simulation.drag().target;
+                state.grab(cursor(), view_size(w));
                 break;
             default:
                 break;
         }
     }
-    if (event.type == SDL_KEYUP && event.key.keysym.sym == SDLK_SPACE && hand.dragging) {
-        state.simulation.end_drag();
-        hand.dragging = false;
-    }
+    if (event.type == SDL_KEYUP && event.key.keysym.sym == SDLK_SPACE) state.let_go();
     if (event.type == SDL_MOUSEBUTTONDOWN && !io.WantCaptureMouse) {
-        if (event.button.button == SDL_BUTTON_LEFT) {
-            start_drag(state, w);
-            if (state.simulation.drag().active())
-                hand.dragging = true, hand.anchor = state.simulation.drag().target;
-        } else if (event.button.button == SDL_BUTTON_RIGHT) {
-            hand.cutting = true;
-            hand.last_cursor = cursor();
-        } else if (event.button.button == SDL_BUTTON_MIDDLE) {
-            toggle_pin_under_cursor(state, w);
-        }
+        if (event.button.button == SDL_BUTTON_LEFT)
+            state.grab(cursor(), view_size(w));
+        else if (event.button.button == SDL_BUTTON_RIGHT)
+            state.start_cut(cursor());
+        else if (event.button.button == SDL_BUTTON_MIDDLE)
+            state.toggle_pin(cursor(), view_size(w));
     }
     if (event.type == SDL_MOUSEBUTTONUP) {
-        if (event.button.button == SDL_BUTTON_LEFT && hand.dragging) {
-            state.simulation.end_drag();
-            hand.dragging = false;
-        }
-        if (event.button.button == SDL_BUTTON_RIGHT) hand.cutting = false;
+        if (event.button.button == SDL_BUTTON_LEFT) state.let_go();
+        if (event.button.button == SDL_BUTTON_RIGHT) state.end_cut();
     }
     if (event.type == SDL_MOUSEMOTION) {
-        if (hand.dragging) move_drag(state, w, hand);
-        if (hand.cutting) {
-            const glm::vec2 now = cursor();
-            cut_along_stroke(state.simulation, state.rig.camera(), w.framebuffer.width(),
-                             w.framebuffer.height(), hand.last_cursor, now);
-            hand.last_cursor = now;
-        }
+        state.pull(cursor(), view_size(w));
+        state.cut_to(cursor(), view_size(w));
     }
     if (event.type == SDL_MOUSEWHEEL && !io.WantCaptureMouse)
         state.rig.zoom(static_cast<float>(event.wheel.y), 1.5f);
@@ -212,41 +161,6 @@ void move_camera(DemoState& state, double seconds) {
     const float yaw = float(keys[SDL_SCANCODE_LEFT]) - float(keys[SDL_SCANCODE_RIGHT]);
     const float pitch = float(keys[SDL_SCANCODE_UP]) - float(keys[SDL_SCANCODE_DOWN]);
     state.rig.turn(1.2f * yaw, 1.2f * pitch, static_cast<float>(seconds));  // rad/s
-}
-
-// ---- stepping with recovery ---------------------------------------------------------------
-
-// Steps the planned number; on divergence rolls back to the last sound state, halves dt and
-// says so, so the demo keeps running instead of freezing or showing noise.
-void step_simulation(DemoState& state, int steps) {
-    Simulation& sim = state.simulation;
-    for (int s = 0; s < steps; ++s) {
-        const StepReport report = sim.step();
-        if (report.diverged()) {
-            char text[512];
-            const double new_dt = 0.5 * sim.dt();
-            std::snprintf(
-                text, sizeof text,
-                "diverged at t=%.3f s: %s — rolled back to t=%.3f s, dt halved to %.3g ms",
-                sim.time(), report.divergence->c_str(),
-                state.last_good ? state.last_good->time() : 0.0, new_dt * 1e3);
-            if (state.last_good) {
-                sim = *state.last_good;
-            } else {
-                sim.reset();
-            }
-            sim.set_dt(new_dt);
-            state.cloth_view = view::ClothView(sim.cloth());
-            ++state.recoveries;
-            say(state, text);
-            return;
-        }
-        // Keep a sound state from about a quarter second back.
-        if (sim.time() - state.last_good_time >= 0.25) {
-            state.last_good = sim;
-            state.last_good_time = sim.time();
-        }
-    }
 }
 
 // ---- drawing --------------------------------------------------------------------------------
@@ -305,7 +219,6 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
     ImGui_ImplSDL2_InitForSDLRenderer(w.window);
     ImGui_ImplSDLRenderer_Init(w.renderer);
 
-    Hand hand;
     const double started = now_seconds();
     long long frames = 0;
     double total_sim_seconds = 0.0, total_raster_seconds = 0.0;
@@ -315,12 +228,13 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
     while (running) {
         SDL_Event event;
         while (SDL_PollEvent(&event))
-            if (!handle_event(event, state, w, hand)) running = false;
+            if (!handle_event(event, state, w)) running = false;
         const double now = now_seconds();
+        state.wall_now = now;
         const double elapsed = now - last;
         last = now;
         move_camera(state, elapsed);
-        if (hand.dragging) move_drag(state, w, hand);  // the camera may move under a held drag
+        state.pull(cursor(), view_size(w));  // the camera may move under a held drag
 
         // Step: as many fixed steps as keep simulated time with the clock, within budget.
         StepClock::Plan plan =
@@ -331,11 +245,11 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
             state.single_step = false;
         }
         const double sim_start = now_seconds();
-        step_simulation(state, plan.steps);
+        const int steps = state.step(plan.steps);
         const double sim_seconds = now_seconds() - sim_start;
-        if (plan.steps > 0) seconds_per_step = sim_seconds / plan.steps;
+        if (steps > 0) seconds_per_step = sim_seconds / steps;
         DemoStatistics& stats = state.statistics;
-        stats.steps = plan.steps;
+        stats.steps = steps;
         stats.behind = plan.behind;
         stats.sim_seconds = sim_seconds;
         stats.frame_seconds = elapsed;
@@ -369,9 +283,11 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
 
     const double seconds = now_seconds() - started;
     if (frames > 0)
-        std::printf("%lld frames in %.1f s: %.1f fps, %.2f ms stepping and %.2f ms drawing per frame\n", frames,
-                    seconds, static_cast<double>(frames) / seconds, 1e3 * total_sim_seconds / static_cast<double>(frames),
-                    1e3 * total_raster_seconds / static_cast<double>(frames));
+        std::printf(
+            "%lld frames in %.1f s: %.1f fps, %.2f ms stepping and %.2f ms drawing per frame\n",
+            frames, seconds, static_cast<double>(frames) / seconds,
+            1e3 * total_sim_seconds / static_cast<double>(frames),
+            1e3 * total_raster_seconds / static_cast<double>(frames));
     if (command_line.dump_path) {
         std::ofstream dump(*command_line.dump_path, std::ios::binary | std::ios::trunc);
         write_state_csv(state.simulation.cloth(), dump);

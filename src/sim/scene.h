@@ -31,6 +31,8 @@ enum class ContactResponse { impulse, repulsion };
 struct GridIndex {
     int row = 0;
     int col = 0;
+
+    bool operator==(const GridIndex&) const = default;
 };
 
 struct ClothSpec {
@@ -43,23 +45,31 @@ struct ClothSpec {
     Vec3d origin = {0.0, 0.0, 0.0};  // m, position of particle (0, 0)
     PinPreset pin_preset = PinPreset::top_corners;
     std::vector<GridIndex> pin_list;  // used when pin_preset == list
+
+    bool operator==(const ClothSpec&) const = default;
 };
 
 struct SpringFamilySpec {
     bool enabled = false;    // structural springs are always enabled
     double stiffness = 0.0;  // N/m
     double damping = 0.0;    // N·s/m, along the spring
+
+    bool operator==(const SpringFamilySpec&) const = default;
 };
 
 struct ForcesSpec {
     Vec3d gravity = {0.0, -9.81, 0.0};  // m/s²
     double air_drag = 0.0;              // N·s/m per particle: f = -air_drag (v - wind)
     Vec3d wind = {0.0, 0.0, 0.0};       // m/s
+
+    bool operator==(const ForcesSpec&) const = default;
 };
 
 struct SolverSpec {
     Integrator integrator = Integrator::symplectic_euler;
     double dt = 0.001;  // s (> 0)
+
+    bool operator==(const SolverSpec&) const = default;
 };
 
 struct ColliderSpec {
@@ -71,12 +81,16 @@ struct ColliderSpec {
     ContactResponse response = ContactResponse::impulse;
     double restitution = 0.0;  // 0 = perfectly inelastic, 1 = elastic
     double friction = 0.3;     // Coulomb coefficient (>= 0)
+
+    bool operator==(const ColliderSpec&) const = default;
 };
 
 struct CameraSpec {
     Vec3d position = {0.0, 0.0, 3.0};  // m
     Vec3d target = {0.0, -0.5, 0.0};   // m
     double fov_degrees = 50.0;         // vertical field of view, (0, 180)
+
+    bool operator==(const CameraSpec&) const = default;
 };
 
 struct Scene {
@@ -92,6 +106,8 @@ struct Scene {
     SolverSpec solver;
     std::vector<ColliderSpec> colliders;
     CameraSpec camera;
+
+    bool operator==(const Scene&) const = default;
 };
 
 // Canonical spelling of an integrator in scene files ("symplectic-euler", ...).

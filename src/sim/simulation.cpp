@@ -45,10 +45,7 @@ void Simulation::reset() {
     workspace_.resize(cloth_.particle_count());
     workspace_.pool = pool_.get();
     drag_ = DragHandle{};
-    colliders_ = make_colliders(scene_.colliders);
-    has_repulsion_ = std::any_of(colliders_.begin(), colliders_.end(), [](const Collider& c) {
-        return c.response == ContactResponse::repulsion;
-    });
+    build_colliders();
     self_collision_.reset();
     if (scene_.self_collision_thickness) self_collision_.emplace(*scene_.self_collision_thickness);
     time_ = 0.0;
@@ -89,6 +86,7 @@ void Simulation::set_integrator(Integrator integrator) {
     StepFunction function = step_function(integrator);
     if (!function) throw std::invalid_argument("integrator not available");
     integrator_ = integrator;
+    scene_.solver.integrator = integrator;  // scene() follows, so reset and saving keep it
     step_function_ = function;
     workspace_.history_valid = false;
 }
@@ -101,7 +99,8 @@ void Simulation::set_dt(double dt) {
 
 namespace {
 
-SpringFamilySpec& family_spec(Scene& scene, SpringFamily family) {
+template <class SceneType>  // Scene or const Scene
+auto& family_spec(SceneType& scene, SpringFamily family) {
     return family == SpringFamily::structural ? scene.structural
            : family == SpringFamily::shear    ? scene.shear
                                               : scene.bend;
@@ -172,9 +171,53 @@ void Simulation::set_strain_limit(std::optional<double> max_stretch) {
     scene_.strain_limit_max_stretch = max_stretch;
 }
 
-Collider& Simulation::edit_collider(std::size_t index) {
-    workspace_.history_valid = false;
-    return colliders_.at(index);
+void Simulation::build_colliders() {
+    colliders_ = make_colliders(scene_.colliders);
+    has_repulsion_ = std::any_of(colliders_.begin(), colliders_.end(), [](const Collider& c) {
+        return c.response == ContactResponse::repulsion;
+    });
+}
+
+bool Simulation::live_changeable(const Scene& running, const Scene& wanted) {
+    if (!(running.cloth == wanted.cloth) || running.colliders.size() != wanted.colliders.size())
+        return false;
+    for (std::size_t c = 0; c < running.colliders.size(); ++c)
+        if (running.colliders[c].type != wanted.colliders[c].type) return false;
+    return true;
+}
+
+void Simulation::set_parameters(const Scene& wanted) {
+    if (!live_changeable(scene_, wanted))
+        throw std::invalid_argument("set_parameters: the cloth or its colliders' shapes differ");
+    if (wanted.solver.integrator != integrator_) set_integrator(wanted.solver.integrator);
+    if (wanted.solver.dt != dt_) set_dt(wanted.solver.dt);
+    for (SpringFamily family :
+         {SpringFamily::structural, SpringFamily::shear, SpringFamily::bend}) {
+        const SpringFamilySpec& want = family_spec(wanted, family);
+        const SpringFamilySpec& have = family_spec(scene_, family);
+        if (want.stiffness != have.stiffness || want.damping != have.damping)
+            set_spring_material(family, want.stiffness, want.damping);
+        if (want.enabled != have.enabled) set_family_enabled(family, want.enabled);
+    }
+    if (wanted.cloth.particle_mass != scene_.cloth.particle_mass)
+        set_particle_mass(wanted.cloth.particle_mass);
+    if (!(wanted.forces == scene_.forces))
+        set_force_field(wanted.forces.gravity, wanted.forces.air_drag, wanted.forces.wind);
+    set_tear_limit(wanted.tear_max_stretch);
+    set_strain_limit(wanted.strain_limit_max_stretch);
+    if (wanted.self_collision_thickness != scene_.self_collision_thickness) {
+        scene_.self_collision_thickness = wanted.self_collision_thickness;
+        self_collision_.reset();
+        if (wanted.self_collision_thickness)
+            self_collision_.emplace(*wanted.self_collision_thickness);
+    }
+    if (wanted.colliders != scene_.colliders) {
+        scene_.colliders = wanted.colliders;
+        build_colliders();
+        workspace_.history_valid = false;
+    }
+    scene_.camera = wanted.camera;
+    scene_.name = wanted.name;
 }
 
 void Simulation::start_drag(DragHandle drag) {

@@ -77,8 +77,17 @@ class Simulation {
     void set_tear_limit(std::optional<double> max_stretch);
     void set_strain_limit(std::optional<double> max_stretch);
     const std::vector<Collider>& colliders() const { return colliders_; }
-    // Moves or edits a collider (the demo moves a sphere with the keyboard).
-    Collider& edit_collider(std::size_t index);
+
+    // Whether `wanted` differs from the running scene only in what can change while the cloth
+    // runs: everything but the cloth's grid, layout, placement and pins and the number and
+    // shapes of the colliders (changing those means building a new Simulation).
+    static bool live_changeable(const Scene& running, const Scene& wanted);
+    // Applies every live parameter of `wanted` (solver, spring families and materials, mass,
+    // forces, tearing, strain limit, self-collision, colliders' placement and response,
+    // camera, name) through the setters above; a value equal to the running one is left
+    // alone, so applying the running scene changes nothing, bit for bit. Requires
+    // live_changeable(scene(), wanted).
+    void set_parameters(const Scene& wanted);
 
     // Back to the scene's initial state (with the parameters as they are now).
     void reset();
@@ -104,6 +113,8 @@ class Simulation {
     Cloth& edit_cloth();
 
   private:
+    void build_colliders();  // colliders_ and has_repulsion_ from scene_.colliders
+
     Scene scene_;
     Cloth cloth_;
     ForceField field_;

@@ -76,7 +76,12 @@ std::string TomlReader::join(const std::string& path, std::string_view key) {
 
 std::string TomlReader::where(const toml::source_region& region, const std::string& path) const {
     // A value an override put there (or inside a table an override put there) is reported
-    // by the override that did it, not by a position in a snippet the user never saw.
+    // by the override that did it, not by a position in a snippet the user never saw; so is
+    // a table an override created on its way to its key ("--set nosuch.key=1").
+    for (const std::string& key : overridden_)
+        if (!path.empty() && key.size() > path.size() && key.compare(0, path.size(), path) == 0 &&
+            key[path.size()] == '.' && region.begin.line == 0)
+            return "--set " + key;
     for (std::string prefix = path; !prefix.empty();) {
         if (overridden_.count(prefix)) return "--set " + prefix;
         const auto dot = prefix.rfind('.');

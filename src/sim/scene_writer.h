@@ -1,0 +1,17 @@
+// Scene writing: a Scene as the TOML text the loader reads back to the same Scene, every
+// number to the last bit. The demo saves its current parameters through this; the panel's
+// live edits are checked by writing the scene, overriding one key and loading it again, so
+// they pass exactly the checks a scene file does (scene_loader.h).
+#pragma once
+
+#include <string>
+
+#include "sim/scene.h"
+
+namespace weft {
+
+// Every key of the format, defaults included, so a saved scene does not depend on defaults
+// that a later version might change. Doubles are written with 17 significant digits.
+std::string scene_to_toml(const Scene& scene);
+
+}  // namespace weft

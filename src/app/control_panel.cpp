@@ -18,6 +18,7 @@ namespace weft::app {
 const char* const controls_text[][2] = {
     {"W / S", "move forward / back"},
     {"A / D", "move left / right"},
+    {"Shift + W/A/S/D/Q/E", "move the first sphere (scenes with one)"},
     {"Q / E", "move down / up"},
     {"arrow keys", "turn left / right / up / down"},
     {"mouse wheel", "zoom"},
@@ -72,6 +73,11 @@ bool slider_log(const char* label, double& value, double low, double high, const
         return false;
     value = v;
     return true;
+}
+
+// A linear slider over [low, high]; Ctrl+click types any value, which change() checks.
+bool slider(const char* label, double& value, double low, double high, const char* format) {
+    return ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &low, &high, format);
 }
 
 void statistics(DemoState& state) {
@@ -186,14 +192,85 @@ void optional_feature(DemoState& state, const char* label, const char* table, co
         } else {
             Scene without = state.simulation.scene();
             without.*member = std::nullopt;
-            state.simulation.set_parameters(without);
-            edit_error.clear();
+            if (auto error = state.change_scene(without))
+                edit_error = *error;
+            else
+                edit_error.clear();
         }
     }
     ImGui::SameLine();
     ImGui::SetNextItemWidth(120);
     if (slider_log(key, v, low, high, format) && on) edit(state, path, number(v));
     ImGui::PopID();
+}
+
+void colliders(DemoState& state) {
+    const std::vector<ColliderSpec>& specs = state.simulation.scene().colliders;
+    if (specs.empty()) {
+        ImGui::TextDisabled("none in this scene");
+        return;
+    }
+    for (std::size_t c = 0; c < specs.size(); ++c) {
+        ImGui::PushID(static_cast<int>(c));
+        Scene wanted = state.simulation.scene();
+        ColliderSpec& spec = wanted.colliders[c];
+        const bool sphere = spec.type == ColliderType::sphere;
+        if (sphere)
+            ImGui::Text("sphere %zu at (%.2f, %.2f, %.2f) m%s", c, spec.center[0], spec.center[1],
+                        spec.center[2], c == 0 ? "  (Shift+W/A/S/D/Q/E moves it)" : "");
+        else
+            ImGui::Text("plane %zu through y = %.2f m", c, spec.point[1]);
+        int response = static_cast<int>(spec.response);
+        bool changed = ImGui::Combo("response", &response, "impulse\0repulsion\0");
+        spec.response = static_cast<ContactResponse>(response);
+        changed |= slider("restitution", spec.restitution, 0.0, 1.0, "%.2f");
+        changed |= slider("friction", spec.friction, 0.0, 2.0, "%.2f");
+        if (sphere) changed |= slider_log("radius (m)", spec.radius, 0.02, 2.0, "%.3f");
+        if (changed) {
+            if (auto error = state.change_scene(wanted))
+                edit_error = *error;
+            else
+                edit_error.clear();
+        }
+        ImGui::PopID();
+    }
+}
+
+void save(DemoState& state) {
+    static char path[512] = "";
+    static std::string status;
+    static bool confirm_replace = false;
+    if (path[0] == '\0') {
+        const std::filesystem::path loaded(state.scene_path);
+        const std::string suggestion =
+            (loaded.parent_path() / (loaded.stem().string() + "-saved.toml")).string();
+        std::snprintf(path, sizeof path, "%s", suggestion.c_str());
+    }
+    if (ImGui::InputText("file", path, sizeof path)) confirm_replace = false;
+    std::string error;
+    if (!confirm_replace && ImGui::Button("save parameters and camera")) {
+        if (state.save_scene(path, false, error)) {
+            status = std::string("saved ") + path;
+        } else if (std::filesystem::exists(path)) {
+            confirm_replace = true;  // ask before replacing anything, the loaded scene above all
+            status.clear();
+        } else {
+            status = error;
+        }
+    }
+    if (confirm_replace) {
+        std::error_code ignored;
+        const bool loaded_from = std::filesystem::equivalent(path, state.scene_path, ignored);
+        ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "%s exists%s. Replace it?", path,
+                           loaded_from ? " (the scene this was loaded from)" : "");
+        if (ImGui::Button("replace")) {
+            status = state.save_scene(path, true, error) ? std::string("saved ") + path : error;
+            confirm_replace = false;
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("cancel")) confirm_replace = false;
+    }
+    if (!status.empty()) ImGui::TextWrapped("%s", status.c_str());
 }
 
 void limits(DemoState& state) {
@@ -261,8 +338,10 @@ void draw_control_panel(DemoState& state) {
     if (ImGui::CollapsingHeader("materials", ImGuiTreeNodeFlags_DefaultOpen)) materials(state);
     if (ImGui::CollapsingHeader("forces")) forces(state);
     if (ImGui::CollapsingHeader("tearing, limits, pins")) limits(state);
+    if (ImGui::CollapsingHeader("colliders")) colliders(state);
     if (ImGui::CollapsingHeader("view")) view_toggles(state);
     if (ImGui::CollapsingHeader("scenes", ImGuiTreeNodeFlags_DefaultOpen)) scenes(state);
+    if (ImGui::CollapsingHeader("save scene")) save(state);
     if (!edit_error.empty())
         ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "refused: %s", edit_error.c_str());
     ImGui::TextDisabled("H: help");

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -166,7 +167,14 @@ bool DemoState::toggle_pin(const glm::vec2& cursor, ViewSize view) {
 std::optional<std::string> DemoState::change(const std::vector<std::string>& edits) {
     // The running parameters as a scene file, with the edits as --set overrides: one set of
     // checks for files, the command line and the panel.
-    SceneLoadResult checked = load_scene_text(scene_to_toml(simulation.scene()), "panel", edits);
+    return apply(load_scene_text(scene_to_toml(simulation.scene()), "panel", edits));
+}
+
+std::optional<std::string> DemoState::change_scene(const Scene& wanted) {
+    return apply(load_scene_text(scene_to_toml(wanted), "panel"));
+}
+
+std::optional<std::string> DemoState::apply(const SceneLoadResult& checked) {
     if (!checked.ok()) return checked.error->message();
     if (Simulation::live_changeable(simulation.scene(), *checked.scene)) {
         simulation.set_parameters(*checked.scene);
@@ -176,6 +184,21 @@ std::optional<std::string> DemoState::change(const std::vector<std::string>& edi
     simulation = Simulation(*checked.scene);
     after_new_simulation();
     return std::nullopt;
+}
+
+void DemoState::move_collider(std::size_t index, const Vec3d& offset) {
+    Scene wanted = simulation.scene();
+    if (index >= wanted.colliders.size()) return;
+    ColliderSpec& collider = wanted.colliders[index];
+    for (int k = 0; k < 3; ++k) {
+        collider.center[k] += offset[k];
+        collider.point[k] += offset[k];
+        if (!std::isfinite(collider.center[k]) || !std::isfinite(collider.point[k])) return;
+    }
+    // A finite move keeps every check of the loader satisfied: no need to go through it at
+    // every frame of a held key.
+    simulation.set_parameters(wanted);
+    ground_height = view::ground_height_below(simulation.cloth(), simulation.colliders());
 }
 
 // ---- scenes -----------------------------------------------------------------------------------

@@ -14,6 +14,7 @@
 
 #include "app/camera_rig.h"
 #include "app/step_clock.h"
+#include "sim/scene_loader.h"
 #include "sim/simulation.h"
 #include "view/cloth_view.h"
 #include "view/frame_renderer.h"
@@ -95,6 +96,11 @@ struct DemoState {
     // checked exactly like a scene file. Returns the error and changes nothing if any is
     // refused; otherwise applies them live, or rebuilds the cloth if they change its grid.
     std::optional<std::string> change(const std::vector<std::string>& overrides);
+    // The same for a whole scene (edits --set cannot name, such as a collider's fields): it
+    // is written out and read back through the loader's checks before anything changes.
+    std::optional<std::string> change_scene(const Scene& wanted);
+    // Moves collider `index` by `offset` (m), as the keyboard does with a sphere.
+    void move_collider(std::size_t index, const Vec3d& offset);
 
     // Back to the scene's start, keeping the parameters changed in the panel.
     void reset_simulation();
@@ -110,6 +116,7 @@ struct DemoState {
     void say(const std::string& text);  // a message on screen (and on stderr)
 
   private:
+    std::optional<std::string> apply(const SceneLoadResult& checked);
     void after_new_simulation();  // view, ground, recovery state for a new cloth
 };
 

@@ -11,6 +11,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <glm/geometric.hpp>
+
 #include "app/demo_state.h"
 #include "raster/framebuffer.h"
 #include "sim/scene_loader.h"
@@ -157,6 +159,50 @@ TEST(DemoState, ASceneThatFailsToLoadLeavesTheRunningOneUntouched) {
     EXPECT_EQ(state.scene_path, path_before);
     EXPECT_FALSE(state.load_scene((folder.path / "missing.toml").string(), error));
     EXPECT_TRUE(state.simulation.scene() == before);
+}
+
+TEST(DemoState, ColliderEditsAreCheckedAndAppliedLive) {
+    DemoState state = demo("sheet_on_sphere.toml");
+    state.step(200);
+    const Scene before = state.simulation.scene();
+    const std::uint64_t hash = hash_state(state.simulation.cloth());
+    for (auto spoil :
+         {+[](ColliderSpec& c) { c.restitution = 1.5; },
+          +[](ColliderSpec& c) { c.friction = -0.1; }, +[](ColliderSpec& c) { c.radius = 0.0; },
+          +[](ColliderSpec& c) { c.center[1] = NAN; }}) {
+        Scene wanted = before;
+        spoil(wanted.colliders[0]);
+        EXPECT_TRUE(state.change_scene(wanted).has_value());
+        EXPECT_TRUE(state.simulation.scene() == before);
+        EXPECT_EQ(hash_state(state.simulation.cloth()), hash);
+    }
+    Scene wanted = before;
+    wanted.colliders[0].response = ContactResponse::repulsion;
+    wanted.colliders[0].friction = 0.9;
+    ASSERT_FALSE(state.change_scene(wanted));
+    EXPECT_EQ(state.simulation.colliders()[0].response, ContactResponse::repulsion);
+    EXPECT_EQ(state.simulation.colliders()[0].friction, 0.9);
+    EXPECT_EQ(hash_state(state.simulation.cloth()), hash);  // same cloth, still running
+}
+
+TEST(DemoState, AMovedSphereCarriesTheClothWithoutLettingItThrough) {
+    DemoState state = demo("sheet_on_sphere.toml");
+    state.step(3000);  // draped
+    const Collider start = state.simulation.colliders()[0];
+    for (int frame = 0; frame < 120; ++frame) {  // 2 s at 60 frames/s, 0.4 m/s straight up
+        state.move_collider(0, {0.0, 0.4 / 60.0, 0.0});
+        state.step(33);
+        const Collider& sphere = state.simulation.colliders()[0];
+        for (const Vec3& x : state.simulation.cloth().positions)
+            ASSERT_GE(glm::length(x - sphere.center), sphere.radius * (1.0 - 1e-9)) << frame;
+    }
+    const Collider& moved = state.simulation.colliders()[0];
+    EXPECT_NEAR(moved.center.y - start.center.y, 0.8, 1e-9);
+    EXPECT_EQ(state.simulation.scene().colliders[0].center[1], moved.center.y);
+    double mean_y = 0.0;
+    for (const Vec3& x : state.simulation.cloth().positions) mean_y += x.y;
+    mean_y /= static_cast<double>(state.simulation.cloth().particle_count());
+    EXPECT_GT(mean_y, start.center.y + 0.2);  // the cloth rode up with it
 }
 
 // ---- saving -------------------------------------------------------------------------------------

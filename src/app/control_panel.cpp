@@ -96,9 +96,9 @@ void statistics(DemoState& state) {
     }
     state.cloth_view.spring_colours(cloth);  // measures the largest strain
     ImGui::Text("largest stretch %.1f %%", 100.0 * state.cloth_view.largest_strain());
-    if (state.recoveries > 0)
+    if (state.recovery.recoveries > 0)
         ImGui::TextColored(ImVec4(1, 0.6f, 0.2f, 1), "recovered from divergence %d times",
-                           state.recoveries);
+                           state.recovery.recoveries);
 }
 
 void solver(DemoState& state) {
@@ -287,7 +287,7 @@ void limits(DemoState& state) {
         else
             edit_error = "drag radius must be in (0, 10] m, got " + number(radius);
     }
-    if (ImGui::Button("release all pins (U)")) state.simulation.release_all_pins();
+    if (ImGui::Button("release all pins (U)")) state.release_all_pins();
 }
 
 void view_toggles(DemoState& state) {

@@ -2,19 +2,15 @@
 // scenes (reset, load, save).
 #include "app/demo_state.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
-#include <filesystem>
 
+#include "app/atomic_file.h"
 #include "app/hand_tools.h"
 #include "sim/scene_loader.h"
 #include "sim/scene_writer.h"
+#include "sim/state_hash.h"
 
 namespace weft::app {
 namespace {
@@ -43,17 +39,31 @@ DemoState::DemoState(const std::string& path, const std::vector<std::string>& sc
       scene(loaded),
       simulation(loaded),
       cloth_view(simulation.cloth()),
+      restart_dt(loaded.solver.dt),
       ground_height(view::ground_height_below(simulation.cloth(), simulation.colliders())),
       rig(scene_rig(loaded)),
       initial_rig(rig) {}
 
-void DemoState::after_new_simulation() {
+void DemoState::after_new_state() {
     cloth_view = view::ClothView(simulation.cloth());
+    recovery.forget();
+    for (Companion& companion : companions) {
+        companion.cloth_view = view::ClothView(companion.simulation.cloth());
+        companion.recovery.forget();
+    }
     ground_height = view::ground_height_below(simulation.cloth(), simulation.colliders());
     hand = Hand{};
-    last_good.reset();
-    last_good_time = -1.0;
     clock.reset();
+}
+
+void DemoState::replace_simulation(const Scene& new_scene) {
+    simulation = Simulation(new_scene);
+    for (Companion& companion : companions) {
+        Scene own = new_scene;
+        own.solver = companion.simulation.scene().solver;
+        companion.simulation = Simulation(own);
+    }
+    after_new_state();
 }
 
 void DemoState::say(const std::string& text) {
@@ -64,76 +74,182 @@ void DemoState::say(const std::string& text) {
 
 // ---- stepping with recovery -----------------------------------------------------------------
 
-int DemoState::step(int steps) {
-    for (int s = 0; s < steps; ++s) {
-        const StepReport report = simulation.step();
-        if (!report.diverged()) {
-            // Keep a sound state from about a quarter second back.
-            if (simulation.time() - last_good_time >= 0.25) {
-                last_good = simulation;
-                last_good_time = simulation.time();
-            }
-            continue;
+bool Recovery::step(Simulation& simulation, double restart_dt, std::string& message) {
+    const StepReport report = simulation.step();
+    if (!report.diverged()) {
+        // Keep a sound state from about a quarter second back.
+        if (simulation.time() - last_good_time >= 0.25) {
+            last_good = simulation;
+            last_good_time = simulation.time();
         }
-        // Roll back the motion, not the user's choices: the parameters stay as they are now,
-        // only dt is halved. A drag in progress is let go (it may be what blew up).
-        const Scene wanted = simulation.scene();
-        const double diverged_at = simulation.time();
-        const double halved_dt = 0.5 * simulation.dt();
-        char text[512];
-        if (halved_dt < smallest_recovery_dt) {
-            simulation.reset();
-            simulation.set_dt(scene.solver.dt);
-            std::snprintf(text, sizeof text,
-                          "diverged at t=%.3f s: %s — no step above %.0e s holds these "
-                          "parameters; restarted the scene at dt %.3g ms",
-                          diverged_at, report.divergence->c_str(), smallest_recovery_dt,
-                          simulation.dt() * 1e3);
+        return true;
+    }
+    // Roll back the motion, not the user's choices: the parameters stay as they are now, only
+    // dt is halved. A drag in progress is let go (it may be what blew up).
+    const Scene wanted = simulation.scene();
+    const double diverged_at = simulation.time();
+    const double halved_dt = 0.5 * simulation.dt();
+    char text[512];
+    if (halved_dt < smallest_recovery_dt) {
+        simulation.reset();
+        simulation.set_dt(restart_dt);
+        forget();
+        std::snprintf(text, sizeof text,
+                      "diverged at t=%.3f s: %s — no step above %.0e s holds these parameters; "
+                      "restarted the scene at dt %.3g ms",
+                      diverged_at, report.divergence->c_str(), smallest_recovery_dt,
+                      restart_dt * 1e3);
+    } else {
+        if (last_good) {
+            simulation = *last_good;
+            simulation.set_parameters(wanted);
         } else {
-            if (last_good) {
-                simulation = *last_good;
-                simulation.set_parameters(wanted);
-            } else {
-                simulation.reset();
-            }
-            simulation.set_dt(halved_dt);
-            std::snprintf(text, sizeof text,
-                          "diverged at t=%.3f s: %s — rolled back to t=%.3f s, dt halved to "
-                          "%.3g ms",
-                          diverged_at, report.divergence->c_str(), simulation.time(),
-                          halved_dt * 1e3);
+            simulation.reset();
         }
-        simulation.end_drag();
-        hand.dragging = false;
-        cloth_view = view::ClothView(simulation.cloth());
-        ++recoveries;
-        say(text);
-        return s;
+        simulation.set_dt(halved_dt);
+        std::snprintf(text, sizeof text,
+                      "diverged at t=%.3f s: %s — rolled back to t=%.3f s, dt halved to %.3g ms",
+                      diverged_at, report.divergence->c_str(), simulation.time(), halved_dt * 1e3);
+    }
+    simulation.end_drag();
+    ++recoveries;
+    message = text;
+    return false;
+}
+
+int DemoState::step(int steps) {
+    auto apply_due_events = [&] {
+        while (replaying && replay_next < replaying->events.size() &&
+               replaying->events[replay_next].step <= steps_run)
+            apply_to_all_runs(replaying->events[replay_next++].event);
+    };
+    for (Companion& companion : companions) companion.seconds = 0.0;
+    apply_due_events();
+    for (int s = 0; s < steps; ++s) {
+        if (replay_finished()) return s;  // a replay ends where its recording ended
+        ++steps_run;
+        std::string why;
+        const bool sound = recovery.step(simulation, restart_dt, why);
+        // Each companion follows to the same simulated time with its own dt.
+        for (std::size_t c = 0; c < companions.size(); ++c) {
+            Companion& companion = companions[c];
+            const auto started = std::chrono::steady_clock::now();
+            std::string companion_why;
+            while (companion.simulation.time() + 0.5 * companion.simulation.dt() <=
+                   simulation.time()) {
+                if (!companion.recovery.step(companion.simulation, restart_dt, companion_why)) {
+                    companion.cloth_view = view::ClothView(companion.simulation.cloth());
+                    say("copy " + std::to_string(c + 1) + ": " + companion_why);
+                    break;
+                }
+            }
+            companion.seconds +=
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        }
+        apply_due_events();
+        if (!sound) {
+            hand.dragging = false;
+            cloth_view = view::ClothView(simulation.cloth());
+            say(why);
+            return s;
+        }
     }
     return steps;
 }
 
+// ---- runs side by side --------------------------------------------------------------------------
+
+const Simulation& DemoState::run(int index) const {
+    return index <= 0 || index > static_cast<int>(companions.size())
+               ? simulation
+               : companions[static_cast<std::size_t>(index - 1)].simulation;
+}
+
+void DemoState::add_companion(Integrator integrator, double dt) {
+    Companion companion{simulation, view::ClothView(simulation.cloth()), {}, 0.0};
+    companion.simulation.set_integrator(integrator);
+    companion.simulation.set_dt(dt);
+    companions.push_back(std::move(companion));
+}
+
+void DemoState::remove_companion(std::size_t index) {
+    if (index < companions.size()) companions.erase(companions.begin() + static_cast<long>(index));
+}
+
+std::optional<std::string> DemoState::change_companion(std::size_t index,
+                                                       const std::vector<std::string>& edits) {
+    if (index >= companions.size()) return "no copy " + std::to_string(index + 1);
+    Simulation& companion = companions[index].simulation;
+    SceneLoadResult checked = load_scene_text(scene_to_toml(companion.scene()), "panel", edits);
+    if (!checked.ok()) return checked.error->message();
+    Scene same_but_solver = *checked.scene;
+    same_but_solver.solver = companion.scene().solver;
+    if (!(same_but_solver == companion.scene()))
+        return "a copy differs from the main run only in its integrator and dt";
+    companion.set_parameters(*checked.scene);
+    return std::nullopt;
+}
+
 // ---- the hand -----------------------------------------------------------------------------------
 
-bool DemoState::grab(const glm::vec2& cursor, ViewSize view) {
+void DemoState::perform(const ClothEvent& event) {
+    if (replaying) return;  // the replay drives the cloth; the hand waits
+    if (recording) recording->events.push_back({steps_run, event});
+    apply_to_all_runs(event);
+}
+
+void DemoState::apply_to_all_runs(const ClothEvent& event) {
+    bool rebuilt = apply_event(simulation, event) == EventResult::rebuilt;
+    for (Companion& companion : companions) {
+        const SolverSpec own = companion.simulation.scene().solver;
+        rebuilt |= apply_event(companion.simulation, event, &own) == EventResult::rebuilt;
+    }
+    using Kind = ClothEvent::Kind;
+    if (rebuilt || event.kind == Kind::reset) {
+        after_new_state();
+    } else if (event.kind == Kind::cut || event.kind == Kind::pin || event.kind == Kind::unpin ||
+               event.kind == Kind::release_pins) {
+        // A rollback must not undo the user's cuts and pins: the state just after them is the
+        // most recent sound one.
+        auto remember = [](Recovery& r, const Simulation& s) {
+            r.last_good = s;
+            r.last_good_time = s.time();
+        };
+        remember(recovery, simulation);
+        for (Companion& companion : companions) remember(companion.recovery, companion.simulation);
+    } else if (event.kind == Kind::parameters) {
+        ground_height = view::ground_height_below(simulation.cloth(), simulation.colliders());
+    }
+    if (event.kind == ClothEvent::Kind::let_go) hand.dragging = false;
+}
+
+bool DemoState::grab(const glm::vec2& cursor, ViewSize view, int run_index) {
+    if (replaying) return false;
     auto hit =
-        cloth_under_cursor(simulation.cloth(), rig.camera(), view.width, view.height, cursor);
+        cloth_under_cursor(run(run_index).cloth(), rig.camera(), view.width, view.height, cursor);
     if (!hit) return false;  // only grabs when the cursor is on the cloth
-    simulation.start_drag(grab_cloth(simulation.cloth(), *hit, drag_radius));
+    ClothEvent event;
+    event.kind = ClothEvent::Kind::grab;
+    event.hit = *hit;
+    event.radius = drag_radius;
+    perform(event);
     hand.dragging = simulation.drag().active();
-    if (hand.dragging) hand.anchor = simulation.drag().target;
+    hand.anchor = hit->point;
     return hand.dragging;
 }
 
 void DemoState::pull(const glm::vec2& cursor, ViewSize view) {
     if (!hand.dragging || !simulation.drag().active()) return;
-    if (auto target =
-            point_on_grab_plane(rig.camera(), view.width, view.height, cursor, hand.anchor))
-        simulation.move_drag_target(*target);
+    auto target = point_on_grab_plane(rig.camera(), view.width, view.height, cursor, hand.anchor);
+    if (!target || *target == simulation.drag().target) return;  // nothing new to record
+    ClothEvent event;
+    event.kind = ClothEvent::Kind::pull;
+    event.target = *target;
+    perform(event);
 }
 
 void DemoState::let_go() {
-    if (hand.dragging) simulation.end_drag();
+    if (hand.dragging) perform(plain_event(ClothEvent::Kind::let_go));
     hand.dragging = false;
 }
 
@@ -142,24 +258,38 @@ void DemoState::start_cut(const glm::vec2& cursor) {
     hand.last_cursor = cursor;
 }
 
-std::size_t DemoState::cut_to(const glm::vec2& cursor, ViewSize view) {
-    if (!hand.cutting) return 0;
-    const std::size_t cut = cut_along_stroke(simulation, rig.camera(), view.width, view.height,
-                                             hand.last_cursor, cursor);
+std::size_t DemoState::cut_to(const glm::vec2& cursor, ViewSize view, int run_index) {
+    if (!hand.cutting || replaying) return 0;
+    ClothEvent event;
+    event.kind = ClothEvent::Kind::cut;
+    event.springs = springs_along_stroke(run(run_index).cloth(), rig.camera(), view.width,
+                                         view.height, hand.last_cursor, cursor);
     hand.last_cursor = cursor;
-    return cut;
+    if (event.springs.empty()) return 0;
+    const std::size_t before = simulation.cloth().spring_count();
+    perform(event);
+    return before - simulation.cloth().spring_count();
 }
 
 void DemoState::end_cut() {
     hand.cutting = false;
 }
 
-bool DemoState::toggle_pin(const glm::vec2& cursor, ViewSize view) {
-    auto hit =
-        cloth_under_cursor(simulation.cloth(), rig.camera(), view.width, view.height, cursor);
+bool DemoState::toggle_pin(const glm::vec2& cursor, ViewSize view, int run_index) {
+    if (replaying) return false;
+    const Simulation& target = run(run_index);
+    auto hit = cloth_under_cursor(target.cloth(), rig.camera(), view.width, view.height, cursor);
     if (!hit) return false;
-    simulation.set_pinned(hit->particle, !simulation.cloth().is_pinned(hit->particle));
+    ClothEvent event;
+    event.kind =
+        target.cloth().is_pinned(hit->particle) ? ClothEvent::Kind::unpin : ClothEvent::Kind::pin;
+    event.particle = hit->particle;
+    perform(event);
     return true;
+}
+
+void DemoState::release_all_pins() {
+    perform(plain_event(ClothEvent::Kind::release_pins));
 }
 
 // ---- parameter changes ------------------------------------------------------------------------
@@ -176,13 +306,11 @@ std::optional<std::string> DemoState::change_scene(const Scene& wanted) {
 
 std::optional<std::string> DemoState::apply(const SceneLoadResult& checked) {
     if (!checked.ok()) return checked.error->message();
-    if (Simulation::live_changeable(simulation.scene(), *checked.scene)) {
-        simulation.set_parameters(*checked.scene);
-        return std::nullopt;
-    }
-    // A new grid, placement, pins or collider shape: a new cloth.
-    simulation = Simulation(*checked.scene);
-    after_new_simulation();
+    if (replaying) return std::string("a session is replaying: stop it to change parameters");
+    ClothEvent event;
+    event.kind = ClothEvent::Kind::parameters;
+    event.scene_toml = scene_to_toml(*checked.scene);
+    perform(event);
     return std::nullopt;
 }
 
@@ -193,23 +321,16 @@ void DemoState::move_collider(std::size_t index, const Vec3d& offset) {
     for (int k = 0; k < 3; ++k) {
         collider.center[k] += offset[k];
         collider.point[k] += offset[k];
-        if (!std::isfinite(collider.center[k]) || !std::isfinite(collider.point[k])) return;
     }
-    // A finite move keeps every check of the loader satisfied: no need to go through it at
-    // every frame of a held key.
-    simulation.set_parameters(wanted);
-    ground_height = view::ground_height_below(simulation.cloth(), simulation.colliders());
+    change_scene(wanted);  // refused (so nothing moves) only if a coordinate overflowed
 }
 
 // ---- scenes -----------------------------------------------------------------------------------
 
 void DemoState::reset_simulation() {
-    simulation.reset();
-    cloth_view = view::ClothView(simulation.cloth());
-    hand = Hand{};
-    last_good.reset();
-    last_good_time = -1.0;
-    clock.reset();
+    if (replaying) return;
+    perform(plain_event(ClothEvent::Kind::reset));
+    if (!recording) steps_run = 0;
 }
 
 bool DemoState::load_scene(const std::string& path, std::string& error) {
@@ -220,10 +341,57 @@ bool DemoState::load_scene(const std::string& path, std::string& error) {
     }
     scene_path = path;
     scene = *loaded.scene;
-    simulation = Simulation(scene);
+    recording.reset();
+    replaying.reset();
+    replace_simulation(scene);
+    restart_dt = scene.solver.dt;
+    steps_run = 0;
     rig = initial_rig = scene_rig(scene);
-    after_new_simulation();
     return true;
+}
+
+// ---- recording and replay ---------------------------------------------------------------------
+
+void DemoState::start_recording() {
+    replaying.reset();
+    apply_to_all_runs(plain_event(ClothEvent::Kind::reset));
+    restart_dt = simulation.dt();
+    steps_run = 0;
+    recording = SessionRecord{};
+    recording->scene_toml = scene_to_toml(simulation.scene());
+}
+
+SessionRecord DemoState::stop_recording() {
+    SessionRecord record = recording.value_or(SessionRecord{});
+    record.steps = steps_run;
+    record.final_state_hash = hash_state(simulation.cloth());
+    recording.reset();
+    return record;
+}
+
+void DemoState::start_replay(const SessionRecord& record) {
+    SceneLoadResult loaded = load_scene_text(record.scene_toml, "recorded scene");
+    if (!loaded.ok()) {
+        say("cannot replay: " + loaded.error->message());
+        return;
+    }
+    recording.reset();
+    scene = *loaded.scene;
+    replace_simulation(scene);
+    restart_dt = scene.solver.dt;
+    steps_run = 0;
+    replaying = record;
+    replay_next = 0;
+}
+
+void DemoState::stop_replay() {
+    replaying.reset();
+    replay_next = 0;
+}
+
+bool DemoState::replay_matches() const {
+    return replay_finished() && replay_next == replaying->events.size() &&
+           hash_state(simulation.cloth()) == replaying->final_state_hash;
 }
 
 Scene DemoState::scene_to_save() const {
@@ -235,40 +403,7 @@ Scene DemoState::scene_to_save() const {
 }
 
 bool DemoState::save_scene(const std::string& path, bool overwrite, std::string& error) const {
-    namespace fs = std::filesystem;
-    std::error_code exists_error;
-    if (!overwrite && fs::exists(path, exists_error)) {
-        error = path + ": exists; confirm to replace it";
-        return false;
-    }
-    const std::string text = scene_to_toml(scene_to_save());
-    // A unique temporary file in the same folder (rename is atomic only within one file
-    // system), written and flushed to disk before it takes the final name.
-    const fs::path folder = fs::path(path).parent_path();
-    std::string temporary =
-        (folder.empty() ? fs::path(".") : folder).string() + "/.weft-save-XXXXXX";
-    const int fd = ::mkstemp(temporary.data());
-    if (fd < 0) {
-        error = path + ": cannot create a temporary file beside it: " + std::strerror(errno);
-        return false;
-    }
-    bool written = true;
-    for (std::size_t done = 0; written && done < text.size();) {
-        const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-        if (n < 0 && errno == EINTR) continue;
-        written = n > 0;
-        if (written) done += static_cast<std::size_t>(n);
-    }
-    const int saved_errno = errno;
-    written = written && ::fsync(fd) == 0;
-    ::fchmod(fd, 0644);  // mkstemp makes it private; a scene file is an ordinary document
-    ::close(fd);
-    if (!written || ::rename(temporary.c_str(), path.c_str()) != 0) {
-        error = path + ": cannot write: " + std::strerror(written ? errno : saved_errno);
-        ::unlink(temporary.c_str());
-        return false;
-    }
-    return true;
+    return write_file_atomically(path, scene_to_toml(scene_to_save()), overwrite, error);
 }
 
 }  // namespace weft::app

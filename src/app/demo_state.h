@@ -1,9 +1,9 @@
 // DemoState: everything the interactive demo keeps between frames, apart from SDL itself,
 // and every operation the window performs on it: stepping with recovery from divergence,
-// the hand on the cloth (drag, cut, pin), checked parameter changes, loading and saving
-// scenes. SDL-free, so the same code the window runs is tested headless (demo_state_test).
-// The window (demo_window.cpp) turns events into these calls; the panel (control_panel.cpp)
-// edits through change().
+// the hand on the cloth (drag, cut, pin), checked parameter changes, runs side by side,
+// recording and replaying a session, loading and saving scenes. SDL-free, so the same code
+// the window runs is tested headless (demo_state_test, session_test). The window turns
+// events into these calls; the panel (control_panel.cpp) edits through change().
 #pragma once
 
 #include <optional>
@@ -13,6 +13,8 @@
 #include <glm/vec2.hpp>
 
 #include "app/camera_rig.h"
+#include "app/cloth_event.h"
+#include "app/session_record.h"
 #include "app/step_clock.h"
 #include "sim/scene_loader.h"
 #include "sim/simulation.h"
@@ -38,7 +40,7 @@ struct Hand {
     glm::vec2 last_cursor{0.0f};  // px, where the cut stroke was at the last motion
 };
 
-// The view the cursor is in: window pixels, origin top left.
+// The view the cursor is in: pixels, origin top left.
 struct ViewSize {
     int width = 1;
     int height = 1;
@@ -48,12 +50,40 @@ struct ViewSize {
 // would stall the demo without making a hopeless parameter set stable).
 inline constexpr double smallest_recovery_dt = 1e-6;  // s
 
+// Recovery from divergence for one simulation: a recent sound state to roll back to.
+struct Recovery {
+    std::optional<Simulation> last_good;
+    double last_good_time = -1.0;  // s, simulated
+    int recoveries = 0;
+
+    void forget() {
+        last_good.reset();
+        last_good_time = -1.0;
+    }
+    // One step. On divergence: rolls back to the last sound state keeping the parameters as
+    // they are now, halves dt, lets go of any drag, and returns false with `message` saying
+    // what happened; if halving would go below smallest_recovery_dt it restarts the scene at
+    // `restart_dt` instead.
+    bool step(Simulation& simulation, double restart_dt, std::string& message);
+};
+
+// A run shown beside the main one: same cloth, same hand, its own integrator and dt.
+struct Companion {
+    Simulation simulation;
+    view::ClothView cloth_view;
+    Recovery recovery;
+    double seconds = 0.0;  // stepping in the last frame, s
+};
+
 struct DemoState {
     std::string scene_path;
     std::vector<std::string> overrides;
-    Scene scene;  // as loaded
+    Scene scene;  // as loaded (or as the replayed session started)
     Simulation simulation;
     view::ClothView cloth_view;
+    Recovery recovery;
+    double restart_dt = 0.0;  // s, dt a hopeless run restarts with: the scene's
+    std::vector<Companion> companions;
     view::FrameOptions frame_options;
     float ground_height = 0.0f;
     CameraRig rig;
@@ -65,10 +95,13 @@ struct DemoState {
     bool show_help = false;
     double drag_radius = 0.08;  // m
 
-    // Recovery from divergence: a recent sound state to roll back to, and what happened.
-    std::optional<Simulation> last_good;
-    double last_good_time = -1.0;
-    int recoveries = 0;
+    // Steps run since the scene (re)started, diverged ones included: the clock events are
+    // recorded and replayed by.
+    std::uint64_t steps_run = 0;
+    std::optional<SessionRecord> recording;  // while recording
+    std::optional<SessionRecord> replaying;  // while replaying; events are consumed in order
+    std::size_t replay_next = 0;             // the next event of `replaying` to apply
+
     std::string message;         // shown on screen for a few seconds
     double message_until = 0.0;  // wall clock s
     double wall_now = 0.0;       // wall clock s, set by the window every frame
@@ -77,20 +110,32 @@ struct DemoState {
     DemoState(const std::string& path, const std::vector<std::string>& scene_overrides,
               const Scene& loaded);
 
-    // Takes `steps` steps. On divergence: rolls back to the last sound state (keeping the
-    // parameters as they are now), halves dt, says so and stops for this frame; below
-    // smallest_recovery_dt it restarts the scene instead. Returns the steps taken.
+    // Takes `steps` steps of the main run, each companion following to the same simulated
+    // time, applying the replayed events that fall due. Stops early when the main run
+    // diverges and recovers (see Recovery). Returns the steps the main run took.
     int step(int steps);
 
-    // The hand, at a cursor in a view of the given size. grab() takes hold only where the
-    // cursor is on the cloth; pull() moves the held point on the plane it was grabbed in.
-    bool grab(const glm::vec2& cursor, ViewSize view);
+    // The runs side by side: 0 is the main run, 1.. the companions.
+    int run_count() const { return 1 + static_cast<int>(companions.size()); }
+    const Simulation& run(int index) const;
+    // A companion starting from the main run's current state with another integrator and dt.
+    void add_companion(Integrator integrator, double dt);
+    void remove_companion(std::size_t index);
+    // Edits a companion's own solver ("solver.integrator=rk4", "solver.dt=0.0005"), checked.
+    std::optional<std::string> change_companion(std::size_t index,
+                                                const std::vector<std::string>& edits);
+
+    // The hand, at a cursor in a view of the given size showing run `run_index`. grab()
+    // takes hold only where the cursor is on that run's cloth; the event then goes to every
+    // run. Ignored while a session replays.
+    bool grab(const glm::vec2& cursor, ViewSize view, int run_index = 0);
     void pull(const glm::vec2& cursor, ViewSize view);
     void let_go();
     void start_cut(const glm::vec2& cursor);
-    std::size_t cut_to(const glm::vec2& cursor, ViewSize view);  // springs cut
+    std::size_t cut_to(const glm::vec2& cursor, ViewSize view, int run_index = 0);
     void end_cut();
-    bool toggle_pin(const glm::vec2& cursor, ViewSize view);  // false: nothing under it
+    bool toggle_pin(const glm::vec2& cursor, ViewSize view, int run_index = 0);
+    void release_all_pins();
 
     // Changes parameters by "KEY=VALUE" overrides of the scene format (as --set takes them),
     // checked exactly like a scene file. Returns the error and changes nothing if any is
@@ -113,11 +158,26 @@ struct DemoState {
     // The scene save_scene writes.
     Scene scene_to_save() const;
 
+    // Recording restarts the scene (with the current parameters), so the recording starts
+    // from a state a replay can rebuild; stop_recording() returns the session.
+    void start_recording();
+    SessionRecord stop_recording();
+    // Replays a session from its start: the scene it recorded, then its events at their
+    // steps. replay_finished() once every step has run; replay_matches() then tells whether
+    // the state is bit for bit the one recorded.
+    void start_replay(const SessionRecord& record);
+    bool replay_finished() const { return replaying && steps_run >= replaying->steps; }
+    bool replay_matches() const;
+    void stop_replay();  // back to the hand, from wherever the replay got to
+
     void say(const std::string& text);  // a message on screen (and on stderr)
 
   private:
+    void perform(const ClothEvent& event);  // record it, then apply it to every run
+    void apply_to_all_runs(const ClothEvent& event);
     std::optional<std::string> apply(const SceneLoadResult& checked);
-    void after_new_simulation();  // view, ground, recovery state for a new cloth
+    void replace_simulation(const Scene& new_scene);  // a new cloth for every run
+    void after_new_state();  // views, ground, recovery, hand for a new or reset cloth
 };
 
 }  // namespace weft::app

@@ -121,7 +121,7 @@ bool handle_event(const SDL_Event& event, DemoState& state, Window& w) {
                 state.toggle_pin(cursor(), view_size(w));
                 break;
             case SDLK_u:
-                state.simulation.release_all_pins();
+                state.release_all_pins();
                 break;
             case SDLK_SPACE:
                 state.grab(cursor(), view_size(w));

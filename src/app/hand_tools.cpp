@@ -1,8 +1,11 @@
 #include "app/hand_tools.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <vector>
+
+#include "sim/topology_edits.h"
 
 namespace weft::app {
 
@@ -34,18 +37,33 @@ bool segments_cross(const glm::vec2& a0, const glm::vec2& a1, const glm::vec2& b
            d4 != 0;
 }
 
-std::size_t cut_along_stroke(Simulation& simulation, const raster::Camera& camera, int width,
-                             int height, const glm::vec2& from, const glm::vec2& to) {
-    const Cloth& cloth = simulation.cloth();
+std::vector<std::uint64_t> springs_along_stroke(const Cloth& cloth, const raster::Camera& camera,
+                                                int width, int height, const glm::vec2& from,
+                                                const glm::vec2& to) {
     std::vector<std::optional<glm::vec2>> on_screen(cloth.particle_count());
     for (std::size_t p = 0; p < cloth.particle_count(); ++p)
         if (auto w =
                 raster::project_to_window(camera, width, height, glm::vec3(cloth.positions[p])))
             on_screen[p] = glm::vec2(w->x, w->y);
-    return simulation.cut_springs([&](const Spring& spring) {
-        const auto& a = on_screen[spring.i];
-        const auto& b = on_screen[spring.j];
-        return a && b && segments_cross(*a, *b, from, to);
+    std::vector<std::uint64_t> crossed;
+    for (const SpringGroup& group : cloth.spring_groups)
+        for (const Spring& spring : group.springs) {
+            const auto& a = on_screen[spring.i];
+            const auto& b = on_screen[spring.j];
+            if (a && b && segments_cross(*a, *b, from, to))
+                crossed.push_back(edge_key(spring.i, spring.j));
+        }
+    std::sort(crossed.begin(), crossed.end());
+    return crossed;
+}
+
+std::size_t cut_along_stroke(Simulation& simulation, const raster::Camera& camera, int width,
+                             int height, const glm::vec2& from, const glm::vec2& to) {
+    const std::vector<std::uint64_t> crossed =
+        springs_along_stroke(simulation.cloth(), camera, width, height, from, to);
+    if (crossed.empty()) return 0;
+    return simulation.cut_springs([&](const Spring& s) {
+        return std::binary_search(crossed.begin(), crossed.end(), edge_key(s.i, s.j));
     });
 }
 

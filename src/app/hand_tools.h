@@ -4,7 +4,9 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
+#include <vector>
 
 #include <glm/vec2.hpp>
 
@@ -25,6 +27,12 @@ std::optional<Vec3> point_on_grab_plane(const raster::Camera& camera, int width,
 // Whether the window segments a0-a1 and b0-b1 cross.
 bool segments_cross(const glm::vec2& a0, const glm::vec2& a1, const glm::vec2& b0,
                     const glm::vec2& b1);
+
+// The springs whose on-screen image crosses the cursor's stroke from `from` to `to`, as
+// ascending edge keys (topology_edits.h).
+std::vector<std::uint64_t> springs_along_stroke(const Cloth& cloth, const raster::Camera& camera,
+                                                int width, int height, const glm::vec2& from,
+                                                const glm::vec2& to);
 
 // Cuts the springs whose on-screen image crosses the cursor's stroke from `from` to `to`.
 // Returns the number cut.

@@ -5,13 +5,19 @@
 
 namespace weft::app {
 
-std::string next_screenshot_path(const std::string& directory) {
+std::string next_free_path(const std::string& directory, const std::string& prefix,
+                           const std::string& extension) {
     for (int number = 1;; ++number) {
-        char name[64];
-        std::snprintf(name, sizeof name, "weft-screenshot-%04d.png", number);
-        const std::filesystem::path path = std::filesystem::path(directory) / name;
+        char suffix[32];
+        std::snprintf(suffix, sizeof suffix, "-%04d.", number);
+        const std::filesystem::path path =
+            std::filesystem::path(directory) / (prefix + suffix + extension);
         if (!std::filesystem::exists(path)) return path.string();
     }
+}
+
+std::string next_screenshot_path(const std::string& directory) {
+    return next_free_path(directory, "weft-screenshot", "png");
 }
 
 }  // namespace weft::app

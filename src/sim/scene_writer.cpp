@@ -22,25 +22,6 @@ std::string vec3(const Vec3d& v) {
     return text.append("]");
 }
 
-// A TOML basic string: quotes, backslashes and control characters escaped.
-std::string quoted(const std::string& text) {
-    std::string out(1, '"');
-    for (unsigned char c : text) {
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += static_cast<char>(c);
-        } else if (c < 0x20 || c == 0x7f) {
-            char escape[8];
-            std::snprintf(escape, sizeof escape, "\\u%04x", c);
-            out += escape;
-        } else {
-            out += static_cast<char>(c);
-        }
-    }
-    out += '"';
-    return out;
-}
-
 const char* pins_preset(PinPreset preset) {
     switch (preset) {
         case PinPreset::none:
@@ -65,9 +46,27 @@ void spring_family(std::ostringstream& out, const char* name, const SpringFamily
 
 }  // namespace
 
+std::string toml_string(const std::string& text) {
+    std::string out(1, '"');
+    for (unsigned char c : text) {
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += static_cast<char>(c);
+        } else if (c < 0x20 || c == 0x7f) {
+            char escape[8];
+            std::snprintf(escape, sizeof escape, "\\u%04x", c);
+            out += escape;
+        } else {
+            out += static_cast<char>(c);
+        }
+    }
+    out += '"';
+    return out;
+}
+
 std::string scene_to_toml(const Scene& scene) {
     std::ostringstream out;
-    out << "# Saved by weft.\nname = " << quoted(scene.name) << "\n";
+    out << "# Saved by weft.\nname = " << toml_string(scene.name) << "\n";
 
     const ClothSpec& cloth = scene.cloth;
     out << "\n[cloth]\n";

@@ -14,4 +14,8 @@ namespace weft {
 // that a later version might change. Doubles are written with 17 significant digits.
 std::string scene_to_toml(const Scene& scene);
 
+// `text` as a TOML basic string: quoted, with quotes, backslashes and control characters
+// escaped (for other files weft writes in TOML, such as session recordings).
+std::string toml_string(const std::string& text);
+
 }  // namespace weft

@@ -314,7 +314,7 @@ TEST(DemoState, PinningEveryParticleFreezesTheClothAndUnpinningFreesIt) {
         EXPECT_EQ(state.step(20), 20);
         EXPECT_EQ(state.simulation.cloth().positions, frozen) << integrator_name(integrator);
     }
-    state.simulation.release_all_pins();
+    state.release_all_pins();
     EXPECT_EQ(state.step(300), 300);
     EXPECT_NE(state.simulation.cloth().positions, frozen);
     EXPECT_TRUE(finite_state(state.simulation.cloth()));
@@ -347,9 +347,9 @@ TEST(DemoState, StiffnessAndDtPushedByOrdersOfMagnitudeRecoverAndKeepTheUsersCho
     for (int frame = 0; frame < 400 && frames_until_stable < 0; ++frame) {
         const int taken = state.step(60);
         ASSERT_TRUE(finite_state(state.simulation.cloth())) << "frame " << frame;
-        if (taken == 60 && state.recoveries > 0) frames_until_stable = frame;
+        if (taken == 60 && state.recovery.recoveries > 0) frames_until_stable = frame;
     }
-    EXPECT_GE(state.recoveries, 1);
+    EXPECT_GE(state.recovery.recoveries, 1);
     EXPECT_GE(frames_until_stable, 0) << "never settled on a stable dt";
     // The user's stiffness stands; dt came down to where the linear estimate says it holds.
     EXPECT_EQ(state.simulation.scene().structural.stiffness, 100000.0);
@@ -389,7 +389,7 @@ TEST(DemoState, SwitchingIntegratorsEveryStepStaysSound) {
         ASSERT_FALSE(state.change({std::string("solver.integrator=") + names[s % 6]}));
         ASSERT_EQ(state.step(1), 1) << names[s % 6] << " at step " << s << ": " << state.message;
     }
-    EXPECT_EQ(state.recoveries, 0);
+    EXPECT_EQ(state.recovery.recoveries, 0);
     EXPECT_TRUE(finite_state(state.simulation.cloth()));
 }
 

@@ -1,0 +1,82 @@
+#include "app/cloth_event.h"
+
+#include <algorithm>
+
+#include "sim/drag.h"
+#include "sim/scene_loader.h"
+#include "sim/topology_edits.h"
+
+namespace weft::app {
+
+const char* event_kind_name(ClothEvent::Kind kind) {
+    switch (kind) {
+        case ClothEvent::Kind::grab:
+            return "grab";
+        case ClothEvent::Kind::pull:
+            return "pull";
+        case ClothEvent::Kind::let_go:
+            return "let-go";
+        case ClothEvent::Kind::cut:
+            return "cut";
+        case ClothEvent::Kind::pin:
+            return "pin";
+        case ClothEvent::Kind::unpin:
+            return "unpin";
+        case ClothEvent::Kind::release_pins:
+            return "release-pins";
+        case ClothEvent::Kind::parameters:
+            return "parameters";
+        case ClothEvent::Kind::reset:
+            return "reset";
+    }
+    return "unknown";
+}
+
+EventResult apply_event(Simulation& simulation, const ClothEvent& event,
+                        const SolverSpec* keep_solver) {
+    const std::size_t particles = simulation.cloth().particle_count();
+    switch (event.kind) {
+        case ClothEvent::Kind::grab:
+            if (event.hit.particle < particles)
+                simulation.start_drag(grab_cloth(simulation.cloth(), event.hit, event.radius));
+            return EventResult::applied;
+        case ClothEvent::Kind::pull:
+            if (simulation.drag().active()) simulation.move_drag_target(event.target);
+            return EventResult::applied;
+        case ClothEvent::Kind::let_go:
+            if (simulation.drag().active()) simulation.end_drag();
+            return EventResult::applied;
+        case ClothEvent::Kind::cut:
+            if (!event.springs.empty())
+                simulation.cut_springs([&](const Spring& s) {
+                    return std::binary_search(event.springs.begin(), event.springs.end(),
+                                              edge_key(s.i, s.j));
+                });
+            return EventResult::applied;
+        case ClothEvent::Kind::pin:
+        case ClothEvent::Kind::unpin:
+            if (event.particle < particles)
+                simulation.set_pinned(event.particle, event.kind == ClothEvent::Kind::pin);
+            return EventResult::applied;
+        case ClothEvent::Kind::release_pins:
+            simulation.release_all_pins();
+            return EventResult::applied;
+        case ClothEvent::Kind::parameters: {
+            SceneLoadResult loaded = load_scene_text(event.scene_toml, "event");
+            if (!loaded.ok()) return EventResult::refused;
+            if (keep_solver) loaded.scene->solver = *keep_solver;
+            if (!Simulation::live_changeable(simulation.scene(), *loaded.scene)) {
+                simulation = Simulation(*loaded.scene);
+                return EventResult::rebuilt;
+            }
+            simulation.set_parameters(*loaded.scene);
+            return EventResult::applied;
+        }
+        case ClothEvent::Kind::reset:
+            simulation.reset();
+            return EventResult::applied;
+    }
+    return EventResult::applied;
+}
+
+}  // namespace weft::app

@@ -1,0 +1,245 @@
+// Recording and replaying a session, and runs side by side (issue 8), through the DemoState
+// calls the window makes.
+//
+// Truths: a replay of a recorded session ends in the recorded state, bit for bit (state
+// hash); a copy with the same integrator and dt fed the same events stays bit for bit equal
+// to the main run; a recording reads back field for field.
+#include <gtest/gtest.h>
+
+#include "app/demo_state.h"
+#include "app/session_record.h"
+#include "sim/scene_loader.h"
+#include "sim/state_hash.h"
+#include "sim/topology_edits.h"
+
+namespace weft::app {
+namespace {
+
+const std::string scenes_dir = std::string(WEFT_SOURCE_DIR) + "/assets/scenes";
+
+DemoState demo(const std::string& scene_file = "hanging_sheet.toml") {
+    const std::string path = scenes_dir + "/" + scene_file;
+    SceneLoadResult loaded = load_scene_file(path);
+    EXPECT_TRUE(loaded.ok());
+    return DemoState(path, {}, *loaded.scene);
+}
+
+constexpr ViewSize view{800, 600};
+
+// A busy session: frames of uneven length (as a real clock gives), a drag across the sheet,
+// a cut, pins, parameter changes (one of them past the stability limit, so the run diverges
+// and recovers), a change of method, a reset.
+void play_a_busy_session(DemoState& state) {
+    const int frame_steps[] = {16, 17, 9, 31, 16, 1, 24};
+    int frame = 0;
+    auto frames = [&](int count) {
+        for (int f = 0; f < count; ++f) state.step(frame_steps[frame++ % 7]);
+    };
+    frames(60);  // it swings down
+    state.reset_simulation();
+    frames(120);  // and again, to rest
+    ASSERT_TRUE(state.grab({400.0f, 300.0f}, view));
+    for (int move = 0; move < 40; ++move) {
+        state.pull(
+            {400.0f + 6.0f * static_cast<float>(move), 300.0f - 2.0f * static_cast<float>(move)},
+            view);
+        frames(1);
+    }
+    state.let_go();
+    frames(20);
+    std::size_t cut = 0;
+    for (float y = 150.0f; y < 500.0f; y += 50.0f) {
+        state.start_cut({0.0f, y});
+        for (int move = 1; move <= 10; ++move)
+            cut += state.cut_to({80.0f * static_cast<float>(move), y + 10.0f}, view);
+        state.end_cut();
+    }
+    EXPECT_GT(cut, 5u);
+    frames(20);
+    state.toggle_pin({420.0f, 360.0f}, view);
+    ASSERT_FALSE(state.change({"springs.shear.stiffness=150", "forces.wind=[2,0,-1]"}));
+    frames(30);
+    ASSERT_FALSE(state.change({"solver.dt=0.006"}));  // past the limit: diverges, recovers
+    frames(30);
+    ASSERT_FALSE(state.change({"solver.integrator=velocity-verlet"}));
+    frames(30);
+    state.release_all_pins();
+    frames(10);
+}
+
+TEST(Session, AReplayEndsInTheRecordedStateBitForBit) {
+    DemoState recorder = demo();
+    recorder.start_recording();
+    play_a_busy_session(recorder);
+    EXPECT_GE(recorder.recovery.recoveries, 1);  // the session included a recovery
+    const SessionRecord recorded = recorder.stop_recording();
+    ASSERT_GT(recorded.events.size(), 40u);
+
+    // Through the file format, into a demo that has been doing something else.
+    std::string error;
+    const std::optional<SessionRecord> read =
+        session_from_toml(session_to_toml(recorded), "session.toml", error);
+    ASSERT_TRUE(read) << error;
+    DemoState player = demo("all_springs.toml");
+    player.step(100);
+    player.start_replay(*read);
+    int frames = 0;
+    while (!player.replay_finished() && frames++ < 100000) player.step(50);
+    EXPECT_TRUE(player.replay_matches());
+    EXPECT_EQ(hash_state(player.simulation.cloth()), recorded.final_state_hash);
+    EXPECT_EQ(player.steps_run, recorded.steps);
+
+    // The hand and the panel wait while a replay runs, and come back after it.
+    const std::uint64_t replayed = hash_state(player.simulation.cloth());
+    player.reset_simulation();
+    player.start_cut({0.0f, 0.0f});
+    player.cut_to({800.0f, 600.0f}, view);
+    EXPECT_TRUE(player.change({"springs.structural.stiffness=100"}).has_value());
+    EXPECT_EQ(hash_state(player.simulation.cloth()), replayed);
+    player.stop_replay();
+    EXPECT_FALSE(player.change({"springs.structural.stiffness=100"}).has_value());
+}
+
+TEST(Session, TheEventsMatterSoAMatchIsNotAnAccident) {
+    DemoState recorder = demo();
+    recorder.start_recording();
+    play_a_busy_session(recorder);
+    SessionRecord recorded = recorder.stop_recording();
+    // The same session without its cut: the replay must notice.
+    std::erase_if(recorded.events,
+                  [](const TimedEvent& e) { return e.event.kind == ClothEvent::Kind::cut; });
+    DemoState player = demo();
+    player.start_replay(recorded);
+    while (!player.replay_finished()) player.step(64);
+    EXPECT_FALSE(player.replay_matches());
+}
+
+TEST(Session, ARecordingReadsBackFieldForField) {
+    SessionRecord record;
+    record.scene_toml = "name = \"tiny\"\n[cloth]\nrows = 3\ncols = 3\n";
+    record.steps = 1234567;
+    record.final_state_hash = 0xfedcba9876543210u;
+    ClothEvent grab;
+    grab.kind = ClothEvent::Kind::grab;
+    grab.hit = {5, 2, 1.0 / 3.0, {0.1, -0.2, 1e-300}};
+    grab.radius = 0.08;
+    ClothEvent pull;
+    pull.kind = ClothEvent::Kind::pull;
+    pull.target = {1e6, -0.30000000000000004, 2.5};
+    ClothEvent cut;
+    cut.kind = ClothEvent::Kind::cut;
+    cut.springs = {edge_key(0, 1), edge_key(1, 4), edge_key(7, 8)};
+    ClothEvent pin;
+    pin.kind = ClothEvent::Kind::pin;
+    pin.particle = 8;
+    ClothEvent parameters;
+    parameters.kind = ClothEvent::Kind::parameters;
+    parameters.scene_toml = "name = \"quote \\\" backslash \\\\\"\n[solver]\ndt = 0.0005\n";
+    for (const ClothEvent& event : {grab, pull, plain_event(ClothEvent::Kind::let_go), cut, pin,
+                                    plain_event(ClothEvent::Kind::release_pins), parameters,
+                                    plain_event(ClothEvent::Kind::reset)})
+        record.events.push_back({record.events.size() * 10, event});
+    std::string error;
+    auto read = session_from_toml(session_to_toml(record), "s.toml", error);
+    ASSERT_TRUE(read) << error << "\n" << session_to_toml(record);
+    EXPECT_EQ(read->scene_toml, record.scene_toml);
+    EXPECT_EQ(read->steps, record.steps);
+    EXPECT_EQ(read->final_state_hash, record.final_state_hash);
+    ASSERT_EQ(read->events.size(), record.events.size());
+    for (std::size_t e = 0; e < record.events.size(); ++e) {
+        const ClothEvent& a = record.events[e].event;
+        const ClothEvent& b = read->events[e].event;
+        EXPECT_EQ(read->events[e].step, record.events[e].step);
+        EXPECT_EQ(a.kind, b.kind);
+        EXPECT_EQ(a.hit.particle, b.hit.particle);
+        EXPECT_EQ(a.hit.triangle, b.hit.triangle);
+        EXPECT_EQ(a.hit.distance, b.hit.distance);
+        EXPECT_EQ(a.hit.point, b.hit.point);
+        EXPECT_EQ(a.radius, b.radius);
+        EXPECT_EQ(a.target, b.target);
+        EXPECT_EQ(a.springs, b.springs);
+        EXPECT_EQ(a.particle, b.particle);
+        EXPECT_EQ(a.scene_toml, b.scene_toml);
+    }
+}
+
+TEST(Session, AMalformedRecordingIsRefusedWithAPosition) {
+    const std::string good_head =
+        "format = 1\nsteps = 100\nfinal_state_hash = \"0x0000000000000001\"\nscene = \"\"\n";
+    const std::pair<std::string, std::string> cases[] = {
+        {"format = 1\nsteps = \n", "s.toml:2:"},
+        {"format = 2\nsteps = 1\nfinal_state_hash = \"0x0000000000000001\"\nscene = \"\"\n",
+         "s.toml:1:"},
+        {"format = 1\nsteps = -1\n", "s.toml:2:"},
+        {"format = 1\nsteps = 1\nfinal_state_hash = \"12\"\nscene = \"\"\n", "s.toml:3:"},
+        {good_head + "\n[[events]]\nstep = 5\nkind = \"teleport\"\n", "s.toml:8:"},
+        {good_head + "\n[[events]]\nstep = 5\nkind = \"pin\"\nparticle = -3\n", "s.toml:9:"},
+        {good_head + "\n[[events]]\nstep = 50\nkind = \"reset\"\n[[events]]\nstep = 40\n"
+                     "kind = \"reset\"\n",
+         "order of step"},
+        {good_head + "\n[[events]]\nstep = 500\nkind = \"reset\"\n", "after the last step"},
+        {good_head + "\n[[events]]\nstep = 5\nkind = \"pull\"\ntarget = [1, nan, 2]\n",
+         "s.toml:9:"},
+        {good_head + "\n[[events]]\nstep = 5\nkind = \"cut\"\nsprings = [[1, 2, 3]]\n",
+         "s.toml:9:"},
+        {good_head + "\n[[events]]\nstep = 5\nkind = \"parameters\"\nscene = \"[solver]\\ndt = "
+                     "-1\\n\"\n",
+         "dt"},
+        {"format = 1\nsteps = 1\nfinal_state_hash = \"0x0000000000000001\"\nscene = \"[cloth]\\n"
+         "rows = 0\\n\"\n",
+         "rows"},
+    };
+    for (const auto& [text, expected] : cases) {
+        std::string error;
+        EXPECT_FALSE(session_from_toml(text, "s.toml", error)) << text;
+        EXPECT_NE(error.find(expected), std::string::npos) << error << "\n--- for ---\n" << text;
+    }
+}
+
+TEST(SideBySide, ACopyWithTheSameMethodStaysIdenticalThroughTheSameHand) {
+    DemoState state = demo();
+    state.step(2000);
+    state.add_companion(state.simulation.integrator(), state.simulation.dt());
+    state.add_companion(Integrator::rk4, 0.5 * state.simulation.dt());
+    ASSERT_TRUE(state.grab({400.0f, 300.0f}, view, 1));  // picked on the copy: goes to all
+    for (int move = 0; move < 30; ++move) {
+        state.pull(
+            {400.0f - 5.0f * static_cast<float>(move), 300.0f + 3.0f * static_cast<float>(move)},
+            view);
+        state.step(16);
+        EXPECT_TRUE(state.companions[1].simulation.drag().active());
+    }
+    state.let_go();
+    state.start_cut({350.0f, 250.0f});
+    state.cut_to({450.0f, 350.0f}, view, 2);
+    state.toggle_pin({400.0f, 300.0f}, view);
+    ASSERT_FALSE(state.change({"springs.structural.stiffness=600"}));
+    state.step(200);
+    const Simulation& twin = state.companions[0].simulation;
+    const Simulation& rk4 = state.companions[1].simulation;
+    EXPECT_EQ(hash_state(twin.cloth()), hash_state(state.simulation.cloth()));
+    EXPECT_EQ(twin.cloth().spring_count(), state.simulation.cloth().spring_count());
+    // The rk4 copy kept its own method and dt, took the same material, and keeps time.
+    EXPECT_EQ(rk4.integrator(), Integrator::rk4);
+    EXPECT_EQ(rk4.dt(), 0.5 * state.simulation.dt());
+    EXPECT_EQ(rk4.scene().structural.stiffness, 600.0);
+    EXPECT_NEAR(rk4.time(), state.simulation.time(), 0.5 * rk4.dt());
+    EXPECT_NE(hash_state(rk4.cloth()), hash_state(state.simulation.cloth()));
+}
+
+TEST(SideBySide, ACopyChangesOnlyItsOwnSolver) {
+    DemoState state = demo();
+    state.add_companion(Integrator::verlet, 0.001);
+    EXPECT_FALSE(state.change_companion(0, {"solver.integrator=rk4", "solver.dt=0.002"}));
+    EXPECT_EQ(state.companions[0].simulation.integrator(), Integrator::rk4);
+    EXPECT_EQ(state.companions[0].simulation.dt(), 0.002);
+    EXPECT_EQ(state.simulation.integrator(), Integrator::symplectic_euler);
+    const Scene before = state.companions[0].simulation.scene();
+    EXPECT_TRUE(state.change_companion(0, {"springs.structural.stiffness=5"}));
+    EXPECT_TRUE(state.change_companion(0, {"solver.dt=0"}));
+    EXPECT_TRUE(state.companions[0].simulation.scene() == before);
+    EXPECT_TRUE(state.change_companion(3, {"solver.dt=0.001"}));
+}
+
+}  // namespace
+}  // namespace weft::app

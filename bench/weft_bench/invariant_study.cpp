@@ -172,8 +172,9 @@ int run_invariant_study(const InvariantOptions& options) {
         const double reference_dt = base_dt * finest_factor;
         std::printf("  %-17s dt = %-10g ", "rk4 (reference)", reference_dt);
         std::fflush(stdout);
-        const Invariants reference = measure(*scene, Integrator::rk4, reference_dt,
-                                             std::llround(options.duration / reference_dt));
+        const Invariants reference =
+            measure(*scene, Integrator::rk4, reference_dt,
+                    std::max(1LL, std::llround(options.duration / reference_dt)));
         write("rk4-reference", reference_dt, reference, reference.centre_drop, NAN);
 
         ScenePlots plots = make_plots(scene->name + " (" + tag + ")", options.duration);
@@ -187,7 +188,7 @@ int run_invariant_study(const InvariantOptions& options) {
             for (double factor : ladder_factors) {
                 if (stop_requested) break;
                 const double dt = base_dt * factor;
-                const long long steps = std::llround(options.duration / dt);
+                const long long steps = std::max(1LL, std::llround(options.duration / dt));
                 std::printf("  %-17s dt = %-10g ", integrator_name(integrator), dt);
                 std::fflush(stdout);
                 // The measured run is also the timing's warm-up. RK4 at the finest step is

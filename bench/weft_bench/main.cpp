@@ -1,17 +1,22 @@
 // weft-bench: the speed-against-error studies.
 //   weft-bench precision [SCENE.toml]... [--set K=V]... [--out DIR] [--repeats N]
+//                        [--duration SECONDS]  (run length of scenes measured by invariants)
+//   weft-bench invariants [SCENE.toml]... [--set K=V]... [--out DIR] [--repeats N]
+//                         [--duration SECONDS]
 //   weft-bench stability [SCENE.toml] [--sweep grid|mass|stiffness]... [--set K=V]...
 //                        [--out DIR] [--duration SECONDS]
 //   weft-bench throughput [SCENE.toml] [--set K=V]... [--out DIR]
 #include <cstdio>
-#include <cstdlib>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "invariant_study.h"
 #include "precision_study.h"
 #include "stability_study.h"
-#include "throughput_study.h"
+#include "strict_number.h"
 #include "study.h"
+#include "throughput_study.h"
 
 namespace {
 
@@ -21,8 +26,12 @@ int usage(const char* problem) {
         stderr,
         "usage:\n"
         "  weft-bench precision [SCENE.toml]... [--set K=V]... [--out DIR] [--repeats N]\n"
+        "                       [--duration SECONDS]\n"
+        "  weft-bench invariants [SCENE.toml]... [--set K=V]... [--out DIR] [--repeats N]\n"
+        "                        [--duration SECONDS]\n"
         "  weft-bench stability [SCENE.toml] [--sweep grid|mass|stiffness]... [--set K=V]...\n"
-        "                       [--out DIR] [--duration SECONDS]\n");
+        "                       [--out DIR] [--duration SECONDS]\n"
+        "  weft-bench throughput [SCENE.toml] [--set K=V]... [--out DIR]\n");
     return 2;
 }
 
@@ -30,12 +39,12 @@ int usage(const char* problem) {
 
 int main(int argc, char** argv) {
     const std::vector<std::string> args(argv + 1, argv + argc);
-    if (args.empty()) return usage("which study? precision or stability");
+    if (args.empty()) return usage("which study? precision, invariants, stability or throughput");
     const std::string study = args[0];
     std::vector<std::string> scenes, overrides, sweeps;
     std::string out_dir = "bench-out";
     int repeats = 3;
-    double duration = 0.5;
+    std::optional<double> duration;  // s; each study has its own default
     for (std::size_t a = 1; a < args.size(); ++a) {
         const std::string& arg = args[a];
         const bool has_value = a + 1 < args.size();
@@ -45,28 +54,40 @@ int main(int argc, char** argv) {
             out_dir = args[++a];
         else if (arg == "--sweep" && has_value)
             sweeps.push_back(args[++a]);
-        else if (arg == "--repeats" && has_value)
-            repeats = std::max(1, std::atoi(args[++a].c_str()));
-        else if (arg == "--duration" && has_value)
-            duration = std::atof(args[++a].c_str());
-        else if (arg.rfind("--", 0) == 0)
+        else if (arg == "--repeats" && has_value) {
+            std::string why;
+            const auto value = weft::bench::parse_integer(args[++a], 1, 1000, why);
+            if (!value) return usage(("--repeats: " + why).c_str());
+            repeats = static_cast<int>(*value);
+        } else if (arg == "--duration" && has_value) {
+            std::string why;
+            duration = weft::bench::parse_number_above(args[++a], 0.0, why);
+            if (!duration) return usage(("--duration: " + why).c_str());
+        } else if (arg.rfind("--", 0) == 0)
             return usage(("unknown or incomplete option " + arg).c_str());
         else
             scenes.push_back(arg);
     }
-    if (!(duration > 0.0)) return usage("--duration must be > 0");
     weft::bench::install_stop_handler();
     const std::string scenes_dir = WEFT_SCENES_DIR;
     if (study == "precision") {
         if (scenes.empty())
             scenes = {scenes_dir + "/hanging_sheet.toml", scenes_dir + "/stiff_sheet.toml"};
-        return weft::bench::run_precision_study({scenes, overrides, out_dir, repeats});
+        return weft::bench::run_precision_study(
+            {scenes, overrides, out_dir, repeats, duration.value_or(1.0)});
+    }
+    if (study == "invariants") {
+        if (scenes.empty())
+            scenes = {scenes_dir + "/tearing_sheet.toml", scenes_dir + "/sheet_on_sphere.toml"};
+        return weft::bench::run_invariant_study(
+            {scenes, overrides, out_dir, repeats, duration.value_or(1.0)});
     }
     if (study == "stability") {
         if (scenes.size() > 1) return usage("stability takes one scene");
         if (sweeps.empty()) sweeps = {"grid", "mass", "stiffness"};
         const std::string scene = scenes.empty() ? scenes_dir + "/hanging_sheet.toml" : scenes[0];
-        return weft::bench::run_stability_study({scene, overrides, sweeps, out_dir, duration});
+        return weft::bench::run_stability_study(
+            {scene, overrides, sweeps, out_dir, duration.value_or(0.5)});
     }
     if (study == "throughput") {
         if (scenes.size() > 1) return usage("throughput takes one scene");

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "csv_file.h"
+#include "invariant_study.h"
 #include "plot.h"
 #include "sim/energy.h"
 #include "study.h"
@@ -62,9 +63,8 @@ Errors errors_between(const Trajectory& run, const Trajectory& reference) {
     return errors;
 }
 
-}  // namespace
-
-int run_precision_study(const PrecisionOptions& options) {
+// The trajectory-error study proper, on scenes whose trajectories are smooth.
+int run_trajectory_study(const PrecisionOptions& options) {
     std::filesystem::create_directories(options.out_dir);
     const std::string csv_path = options.out_dir + "/precision.csv";
     CsvFile csv(csv_path, {"scene", "integrator", "dt_s", "steps", "diverged", "rms_error_m",
@@ -180,6 +180,37 @@ int run_precision_study(const PrecisionOptions& options) {
     }
     std::printf("\nwrote %s and its plots\n", csv_path.c_str());
     return stop_requested ? 130 : 0;
+}
+
+}  // namespace
+
+int run_precision_study(const PrecisionOptions& options) {
+    // A scene with tears or contacts has no trajectory to converge to (a discontinuity parts
+    // two runs for good), so its runs are measured by their invariants instead.
+    PrecisionOptions smooth = options;
+    InvariantOptions rough{
+        {}, options.overrides, options.out_dir, options.repeats, options.invariant_duration};
+    smooth.scenes.clear();
+    for (const std::string& path : options.scenes) {
+        std::string error;
+        auto scene = load_study_scene(path, options.overrides, error);
+        if (!scene) {
+            std::fprintf(stderr, "%s\n", error.c_str());
+            return 2;
+        }
+        if (has_discontinuities(*scene)) {
+            std::printf("%s: tearing or contacts, so invariants instead of trajectory errors\n",
+                        path.c_str());
+            rough.scenes.push_back(path);
+        } else {
+            smooth.scenes.push_back(path);
+        }
+    }
+    if (!smooth.scenes.empty()) {
+        if (const int status = run_trajectory_study(smooth); status != 0) return status;
+    }
+    if (!rough.scenes.empty()) return run_invariant_study(rough);
+    return 0;
 }
 
 }  // namespace weft::bench

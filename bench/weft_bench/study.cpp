@@ -52,6 +52,12 @@ double median_seconds(int repeats, const std::function<void()>& work) {
     return times[times.size() / 2];
 }
 
+double min_seconds(int repeats, const std::function<void()>& work) {
+    double least = seconds_of(work);
+    for (int r = 1; r < repeats; ++r) least = std::min(least, seconds_of(work));
+    return least;
+}
+
 const char* short_name(Integrator integrator) {
     return integrator_name(integrator);
 }

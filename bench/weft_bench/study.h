@@ -25,17 +25,22 @@ std::optional<Scene> load_study_scene(const std::string& path,
 // Runs `steps` steps; nothing if the simulation diverged (or was stopped).
 bool run_steps(Simulation& simulation, long long steps);
 
-// Wall-clock seconds of a callable, and the median of `repeats` timings.
+// Wall-clock seconds of a callable, and the median or the least of `repeats` timings (the
+// least is the one that other processes on a shared machine disturbed least).
 double seconds_of(const std::function<void()>& work);
 double median_seconds(int repeats, const std::function<void()>& work);
+double min_seconds(int repeats, const std::function<void()>& work);
 
 const char* short_name(Integrator integrator);
 inline constexpr Integrator explicit_integrators[] = {
     Integrator::explicit_euler, Integrator::symplectic_euler, Integrator::verlet,
     Integrator::velocity_verlet, Integrator::rk4};
-inline constexpr Integrator all_integrators[] = {
-    Integrator::explicit_euler, Integrator::symplectic_euler, Integrator::verlet,
-    Integrator::velocity_verlet, Integrator::rk4, Integrator::implicit_euler};
+inline constexpr Integrator all_integrators[] = {Integrator::explicit_euler,
+                                                 Integrator::symplectic_euler,
+                                                 Integrator::verlet,
+                                                 Integrator::velocity_verlet,
+                                                 Integrator::rk4,
+                                                 Integrator::implicit_euler};
 
 // "AMD EPYC, 2 cores": for the header of every report.
 std::string machine_description();

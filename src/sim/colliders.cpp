@@ -98,4 +98,22 @@ std::size_t resolve_impulse_contacts(std::span<const Collider> colliders, Cloth&
     return contacts;
 }
 
+std::size_t push_out_of_impulse_colliders(std::span<const Collider> colliders, Cloth& cloth) {
+    std::size_t moved = 0;
+    for (const Collider& collider : colliders) {
+        if (collider.response != ContactResponse::impulse) continue;
+        for (std::size_t p = 0; p < cloth.particle_count(); ++p) {
+            if (cloth.is_pinned(p)) continue;
+            Vec3 n;
+            const double distance = signed_distance(collider, cloth.positions[p], n);
+            if (distance >= 0.0) continue;
+            ++moved;
+            cloth.positions[p] -= distance * n;
+            const double normal_speed = glm::dot(cloth.velocities[p], n);
+            if (normal_speed < 0.0) cloth.velocities[p] -= normal_speed * n;
+        }
+    }
+    return moved;
+}
+
 }  // namespace weft

@@ -91,8 +91,23 @@ void SelfCollision::find_pairs(const Cloth& cloth,
     }
 }
 
-std::size_t SelfCollision::resolve(Cloth& cloth) {
-    find_pairs(cloth, pairs_);
+std::size_t SelfCollision::resolve(Cloth& cloth, std::span<const Collider> colliders) {
+    std::size_t first_pass_pairs = 0;
+    for (int pass = 0; pass < max_passes; ++pass) {
+        find_pairs(cloth, pairs_);
+        if (pass == 0) first_pass_pairs = pairs_.size();
+        if (pairs_.empty()) break;
+        const double deepest = separate_pairs(cloth);
+        if (!colliders.empty()) push_out_of_impulse_colliders(colliders, cloth);
+        // Corrections this small (and the push out of a solid, which is no larger) cannot
+        // have left an overlap worth another pass.
+        if (deepest < settled_overlap * thickness_) break;
+    }
+    return first_pass_pairs;
+}
+
+double SelfCollision::separate_pairs(Cloth& cloth) const {
+    double deepest = 0.0;
     for (const auto& [a, b] : pairs_) {
         const double wa = cloth.inverse_masses[a], wb = cloth.inverse_masses[b];
         if (wa + wb == 0.0) continue;
@@ -103,6 +118,7 @@ std::size_t SelfCollision::resolve(Cloth& cloth) {
         const Vec3 n = distance > 0.0 ? d / distance : Vec3(0.0, 1.0, 0.0);
         const double share_a = wa / (wa + wb), share_b = wb / (wa + wb);
         const double overlap = thickness_ - distance;
+        deepest = std::max(deepest, overlap);
         cloth.positions[a] -= share_a * overlap * n;
         cloth.positions[b] += share_b * overlap * n;
         // Perfectly inelastic along n: the approaching part of the relative velocity goes.
@@ -112,7 +128,7 @@ std::size_t SelfCollision::resolve(Cloth& cloth) {
             cloth.velocities[b] -= share_b * approach * n;
         }
     }
-    return pairs_.size();
+    return deepest;
 }
 
 }  // namespace weft

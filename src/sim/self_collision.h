@@ -10,7 +10,10 @@
 #include <utility>
 #include <vector>
 
+#include <span>
+
 #include "sim/cloth.h"
+#include "sim/colliders.h"
 
 namespace weft {
 
@@ -25,10 +28,24 @@ class SelfCollision {
                     std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs);
 
     // Pushes each close pair apart to the thickness (half each, or all to the free one) and
-    // removes their approaching relative normal velocity. Returns the pairs resolved.
-    std::size_t resolve(Cloth& cloth);
+    // removes their approaching relative normal velocity. Returns the pairs resolved in the
+    // first pass.
+    //
+    // One pass over the pairs is not enough: pairs are resolved one after another, so a later
+    // push can undo part of an earlier one, and a push can drive a particle back into a solid
+    // the contact pass has just moved it out of (a fold lying on the ground: the lower layer
+    // is pushed into the ground). So the pass is repeated, Gauss–Seidel fashion, each time
+    // followed by pushing particles back out of the impulse `colliders`, until no close pair
+    // is left or `max_passes` are done. The solids go last: they are hard, never left
+    // violated; what is left over is a small overlap between layers, which the next step's
+    // passes take up.
+    std::size_t resolve(Cloth& cloth, std::span<const Collider> colliders = {});
+    static constexpr int max_passes = 8;
+    static constexpr double settled_overlap = 1e-3;  // × thickness: a pass this deep is the last
 
   private:
+    // One Gauss–Seidel pass over pairs_; returns the deepest overlap it corrected (m).
+    double separate_pairs(Cloth& cloth) const;
     void rebuild_hash(const Cloth& cloth);
     void rebuild_joined_pairs(const Cloth& cloth);
     bool joined(std::uint32_t a, std::uint32_t b) const;

@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# weft-bench's command line: bad numbers are refused with status 2 and `error: --OPTION: ...`
+# (never silently replaced), and a tiny invariant study writes the documented CSV and plots.
+# Usage: weft_bench_cli_test.sh WEFT_BENCH_BINARY SOURCE_DIR
+set -uo pipefail
+bench=$1
+scenes=$2/assets/scenes
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+passes=0
+
+# expect STATUS STDERR_REGEX -- ARGS...: runs weft-bench, checks its status and stderr
+# (STDERR_REGEX "quiet": stderr must be empty).
+expect() {
+  local status=$1 pattern=$2
+  shift 3
+  timeout 120 "$bench" "$@" >"$work/out" 2>"$work/err"
+  local actual=$?
+  local stderr_ok=true
+  if [ "$pattern" = quiet ]; then
+    [ -s "$work/err" ] && stderr_ok=false
+  else
+    grep -Eq -- "$pattern" "$work/err" || stderr_ok=false
+  fi
+  if [ "$actual" -ne "$status" ] || [ "$stderr_ok" = false ]; then
+    echo "FAIL: weft-bench $*"
+    echo "  expected status $status and stderr matching: $pattern"
+    echo "  got status $actual, stderr:"; sed 's/^/    /' "$work/err" | head -5
+    failures=$((failures + 1))
+  else
+    passes=$((passes + 1))
+  fi
+}
+
+check() {
+  local description=$1
+  shift
+  if "$@"; then passes=$((passes + 1)); else echo "FAIL: $description"; failures=$((failures + 1)); fi
+}
+
+# Strict numbers: the whole text, in range, or status 2 before anything runs.
+for study in precision invariants; do
+  expect 2 "^error: --repeats: 'abc' is not an integer" -- $study --repeats abc --out "$work/x"
+  expect 2 "^error: --repeats: '3x' is not an integer" -- $study --repeats 3x --out "$work/x"
+  expect 2 "^error: --repeats: '0' is out of range" -- $study --repeats 0 --out "$work/x"
+  expect 2 "^error: --repeats: '-2' is out of range" -- $study --repeats -2 --out "$work/x"
+  expect 2 "^error: --duration: '1x' is not a number" -- $study --duration 1x --out "$work/x"
+  expect 2 "^error: --duration: '0' must be a finite number > 0" -- $study --duration 0 --out "$work/x"
+  expect 2 "^error: --duration: 'nan' must be" -- $study --duration nan --out "$work/x"
+  expect 2 "^error: --duration: '' is not a number" -- $study --duration "" --out "$work/x"
+done
+expect 2 "^error: --duration: '1e999' must be" -- stability --duration 1e999 --out "$work/x"
+expect 2 "^error: unknown study 'precisoin'" -- precisoin
+expect 2 "^error: unknown or incomplete option --repeats" -- invariants --repeats
+check "nothing was written for refused input" test ! -e "$work/x"
+
+# A tiny invariant study: 4x4 tearing sheet, 8 ms per run. One reference row, then six
+# integrators x six steps, each row complete.
+expect 0 quiet -- invariants "$scenes/tearing_sheet.toml" --set cloth.rows=4 --set cloth.cols=4 \
+  --duration 0.008 --repeats 1 --out "$work/inv"
+csv=$work/inv/invariants_tearing_sheet.csv
+check "invariants CSV header" grep -q '^scene,integrator,dt_s,duration_s,steps,diverged,' "$csv"
+check "reference + 36 rows" test "$(tail -n +2 "$csv" | wc -l)" -eq 37
+check "every row has every column" awk -F, 'NR == 1 { n = NF } NF != n { exit 1 }' "$csv"
+check "the reference row comes first" test "$(sed -n 2p "$csv" | cut -d, -f2)" = rk4-reference
+for plot in strain energy sag; do
+  check "plot $plot" test -s "$work/inv/invariants_tearing_sheet_$plot.png"
+done
+
+# precision sends a contact scene to the invariant study, and writes no trajectory errors.
+expect 0 quiet -- precision "$scenes/sheet_on_sphere.toml" --set cloth.rows=3 --set cloth.cols=3 \
+  --duration 0.004 --repeats 1 --out "$work/prec"
+check "contact scene measured by invariants" test -s "$work/prec/invariants_sheet_on_sphere.csv"
+check "no trajectory errors for it" test ! -e "$work/prec/precision.csv"
+
+echo "$passes passed, $failures failed"
+[ "$failures" -eq 0 ]

@@ -1,6 +1,9 @@
 #include "app/command_line.h"
 
 #include <charconv>
+#include <cmath>
+
+#include "sim/scene.h"
 
 namespace weft {
 namespace {
@@ -71,6 +74,33 @@ std::variant<CommandLine, CommandLineError> parse_command_line(
                                         "expects WxH with 1 <= W, H <= 16384, got '" + text + "'"};
             line.screenshot_width = static_cast<int>(*width);
             line.screenshot_height = static_cast<int>(*height);
+        } else if (is_option("--record") || is_option("--replay")) {
+            const std::string option = is_option("--record") ? "--record" : "--replay";
+            auto value = take_value(option);
+            if (!value || value->empty()) return CommandLineError{option, "expects a file name"};
+            (option == "--record" ? line.record_path : line.replay_path) = value;
+        } else if (is_option("--compare")) {
+            auto value = take_value("--compare");
+            const std::string text = value.value_or("");
+            const auto equals = text.find('=');
+            CommandLine::Comparison comparison{text.substr(0, equals), 0.0};
+            if (!integrator_from_name(comparison.integrator))
+                return CommandLineError{"--compare",
+                                        "expects METHOD[=DT] with METHOD one of explicit-euler, "
+                                        "symplectic-euler, verlet, velocity-verlet, rk4, "
+                                        "implicit-euler; got '" +
+                                            text + "'"};
+            if (equals != std::string::npos) {
+                const std::string dt_text = text.substr(equals + 1);
+                const char* end = dt_text.data() + dt_text.size();
+                auto [stop, error] = std::from_chars(dt_text.data(), end, comparison.dt);
+                if (dt_text.empty() || error != std::errc() || stop != end ||
+                    !(comparison.dt > 0.0) || !std::isfinite(comparison.dt))
+                    return CommandLineError{
+                        "--compare",
+                        "expects a dt in seconds > 0 after '=', got '" + dt_text + "'"};
+            }
+            line.comparisons.push_back(comparison);
         } else if (arg.rfind("-", 0) == 0 && arg.size() > 1) {
             return CommandLineError{arg, "unknown option (see weft --help)"};
         } else if (line.scene_path) {
@@ -81,9 +111,27 @@ std::variant<CommandLine, CommandLineError> parse_command_line(
         }
     }
     if (line.help) return line;
+    if (line.replay_path) {
+        // A recording carries its scene and its length.
+        if (line.scene_path)
+            return CommandLineError{*line.scene_path,
+                                    "--replay takes the scene from the recording; give no scene"};
+        if (!line.overrides.empty())
+            return CommandLineError{"--set", "--replay replays the recorded parameters; no --set"};
+        if (line.steps) return CommandLineError{"--steps", "--replay runs the recorded steps"};
+        if (line.record_path) return CommandLineError{"--record", "cannot record a replay"};
+    }
     if (line.headless) {
+        if (line.replay_path) {
+            if (!line.comparisons.empty())
+                return CommandLineError{"--compare", "only applies in the window"};
+            return line;
+        }
         if (!line.scene_path) return CommandLineError{"--headless", "needs a scene file"};
         if (!line.steps) return CommandLineError{"--headless", "needs --steps N"};
+        if (line.record_path) return CommandLineError{"--record", "only applies in the window"};
+        if (!line.comparisons.empty())
+            return CommandLineError{"--compare", "only applies in the window"};
     } else {
         // The window takes --dump (written when it closes) and --size (its size).
         const char* headless_only = line.steps             ? "--steps"
@@ -96,17 +144,25 @@ std::variant<CommandLine, CommandLineError> parse_command_line(
 
 const char* usage_text() {
     return "usage:\n"
-           "  weft [SCENE.toml] [--set KEY=VALUE]...\n"
+           "  weft [SCENE.toml] [--set KEY=VALUE]... [--compare METHOD[=DT]]... [--record FILE]\n"
+           "  weft --replay SESSION.toml [--compare METHOD[=DT]]...\n"
            "  weft --headless SCENE.toml --steps N [--set KEY=VALUE]... [--dump STATE.csv]\n"
            "       [--screenshot IMAGE.png [--size WxH]]\n"
+           "  weft --headless --replay SESSION.toml [--dump STATE.csv] [--screenshot IMAGE.png]\n"
            "\n"
            "  --set KEY=VALUE   override a scene key by its dotted path, e.g. solver.dt=0.0005\n"
            "  --steps N         run exactly N steps of the scene's dt (headless)\n"
            "  --dump FILE       write row,col,x,y,z,vx,vy,vz per particle after the run\n"
            "                    (in the window: when it closes)\n"
            "  --size WxH        screenshot size, or the window's (default 1280x720)\n"
+           "  --compare M[=DT]  show a copy of the scene beside it, stepped by integrator M\n"
+           "                    (at DT seconds; default the scene's dt), fed the same hand\n"
+           "  --record FILE     record the window's session (hand, panel) to FILE on quit\n"
+           "  --replay FILE     replay a recorded session; headless, it reports whether the\n"
+           "                    final state is bit for bit the recorded one\n"
            "\n"
-           "exit status: 0 done, 2 bad input, 3 the simulation diverged\n";
+           "exit status: 0 done, 2 bad input, 3 the simulation diverged,\n"
+           "             4 a headless replay did not reproduce the recorded state\n";
 }
 
 }  // namespace weft

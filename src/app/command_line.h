@@ -1,7 +1,9 @@
-// The command line of `weft` (contract in the design notes):
-//   weft [SCENE.toml] [--set KEY=VALUE]...
+// The command line of `weft` (contract in the design notes, extended):
+//   weft [SCENE.toml] [--set KEY=VALUE]... [--compare METHOD[=DT]]... [--record FILE]
+//   weft --replay SESSION.toml [--compare METHOD[=DT]]...
 //   weft --headless SCENE.toml --steps N [--set KEY=VALUE]... [--dump STATE.csv]
 //        [--screenshot IMAGE.png [--size WxH]]
+//   weft --headless --replay SESSION.toml [--dump STATE.csv] [--screenshot IMAGE.png]
 #pragma once
 
 #include <cstdint>
@@ -22,6 +24,15 @@ struct CommandLine {
     std::optional<std::string> screenshot_path;
     int screenshot_width = 1280;  // pixels, --size WxH
     int screenshot_height = 720;
+    std::optional<std::string> record_path;  // --record FILE: the window's session, on quit
+    std::optional<std::string> replay_path;  // --replay FILE
+    // --compare METHOD[=DT]: runs shown beside the main one, each with its integrator (scene
+    // spelling) and dt in seconds (0: the scene's).
+    struct Comparison {
+        std::string integrator;
+        double dt = 0.0;
+    };
+    std::vector<Comparison> comparisons;
 };
 
 struct CommandLineError {

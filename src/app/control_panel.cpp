@@ -10,6 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "app/atomic_file.h"
+#include "app/screenshot_names.h"
+#include "app/session_record.h"
 #include "sim/energy.h"
 #include "sim/stability_limit.h"
 
@@ -33,6 +36,7 @@ const char* const controls_text[][2] = {
     {"R", "reset the scene"},
     {"F12", "screenshot of the view (weft-screenshot-NNNN.png, never overwritten)"},
     {"Shift+F12", "screenshot of the whole window, panel included"},
+    {"F5", "start recording the session (restarts the scene) / stop and save it"},
     {"H or F1", "this help"},
     {"Esc", "quit"},
 };
@@ -101,13 +105,15 @@ void statistics(DemoState& state) {
                            state.recovery.recoveries);
 }
 
+const char* const integrator_names[] = {
+    "explicit-euler", "symplectic-euler", "verlet", "velocity-verlet", "rk4", "implicit-euler"};
+
 void solver(DemoState& state) {
     const Simulation& sim = state.simulation;
-    const char* names[] = {"explicit-euler", "symplectic-euler", "verlet", "velocity-verlet", "rk4",
-                           "implicit-euler"};
     int current = static_cast<int>(sim.integrator());
-    if (ImGui::Combo("integrator", &current, names, static_cast<int>(std::size(names))))
-        edit(state, "solver.integrator", names[current]);  // a bare word is taken as a string
+    if (ImGui::Combo("integrator", &current, integrator_names,
+                     static_cast<int>(std::size(integrator_names))))
+        edit(state, "solver.integrator", integrator_names[current]);  // a bare word: a string
     double dt_ms = sim.dt() * 1e3;
     if (slider_log("dt (ms)", dt_ms, 0.01, 10.0, "%.3f"))
         edit(state, "solver.dt", number(dt_ms * 1e-3));
@@ -273,6 +279,74 @@ void save(DemoState& state) {
     if (!status.empty()) ImGui::TextWrapped("%s", status.c_str());
 }
 
+// Copies of the scene beside the main run, each with its own integrator and dt.
+void comparison(DemoState& state) {
+    static int new_integrator = static_cast<int>(Integrator::rk4);
+    ImGui::Combo("##new", &new_integrator, integrator_names,
+                 static_cast<int>(std::size(integrator_names)));
+    ImGui::SameLine();
+    if (ImGui::Button("add a copy beside"))
+        state.add_companion(static_cast<Integrator>(new_integrator), state.simulation.dt());
+    for (std::size_t c = 0; c < state.companions.size(); ++c) {
+        ImGui::PushID(static_cast<int>(c) + 100);
+        const Simulation& copy = state.companions[c].simulation;
+        ImGui::Text("copy %zu", c + 1);
+        int current = static_cast<int>(copy.integrator());
+        std::optional<std::string> error;
+        if (ImGui::Combo("integrator", &current, integrator_names,
+                         static_cast<int>(std::size(integrator_names))))
+            error = state.change_companion(
+                c, {std::string("solver.integrator=") + integrator_names[current]});
+        double dt_ms = copy.dt() * 1e3;
+        if (slider_log("dt (ms)", dt_ms, 0.01, 10.0, "%.3f"))
+            error = state.change_companion(c, {"solver.dt=" + number(dt_ms * 1e-3)});
+        if (error) edit_error = *error;
+        if (ImGui::Button("remove")) state.remove_companion(c);
+        ImGui::PopID();
+    }
+}
+
+// Recording the session (F5) and replaying a recording.
+void session(DemoState& state) {
+    static char replay_path[512] = "weft-session-0001.toml";
+    static std::string status;
+    if (state.replaying) {
+        ImGui::Text("replaying: step %llu of %llu",
+                    static_cast<unsigned long long>(state.steps_run),
+                    static_cast<unsigned long long>(state.replaying->steps));
+        if (ImGui::Button("stop the replay")) state.stop_replay();
+        return;
+    }
+    if (state.recording) {
+        ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "recording: %zu events, %llu steps",
+                           state.recording->events.size(),
+                           static_cast<unsigned long long>(state.steps_run));
+        if (ImGui::Button("stop and save (F5)")) {
+            const SessionRecord record = state.stop_recording();
+            const std::string path = next_free_path(".", "weft-session", "toml");
+            std::string error;
+            status = write_file_atomically(path, session_to_toml(record), false, error)
+                         ? "saved " + path
+                         : error;
+        }
+    } else if (ImGui::Button("record (F5; restarts the scene)")) {
+        state.start_recording();
+        status.clear();
+    }
+    ImGui::InputText("session", replay_path, sizeof replay_path);
+    ImGui::SameLine();
+    if (ImGui::Button("replay")) {
+        std::string error;
+        if (auto record = read_session_file(replay_path, error)) {
+            state.start_replay(*record);
+            status.clear();
+        } else {
+            status = error;
+        }
+    }
+    if (!status.empty()) ImGui::TextWrapped("%s", status.c_str());
+}
+
 void limits(DemoState& state) {
     optional_feature(state, "tearing", "tearing", "max_stretch", &Scene::tear_max_stretch, 1.6,
                      1.05, 5.0, "%.2f x rest");
@@ -339,6 +413,8 @@ void draw_control_panel(DemoState& state) {
     if (ImGui::CollapsingHeader("forces")) forces(state);
     if (ImGui::CollapsingHeader("tearing, limits, pins")) limits(state);
     if (ImGui::CollapsingHeader("colliders")) colliders(state);
+    if (ImGui::CollapsingHeader("side by side")) comparison(state);
+    if (ImGui::CollapsingHeader("record and replay")) session(state);
     if (ImGui::CollapsingHeader("view")) view_toggles(state);
     if (ImGui::CollapsingHeader("scenes", ImGuiTreeNodeFlags_DefaultOpen)) scenes(state);
     if (ImGui::CollapsingHeader("save scene")) save(state);

@@ -1,5 +1,5 @@
-// Table of contents: setup · input (keys, mouse: drag, cut, pins) · stepping with recovery ·
-// drawing · main loop.
+// Table of contents: setup · input (keys, mouse: drag, cut, pins, recording) · drawing (runs
+// side by side, their labels) · main loop.
 #include "app/demo_window.h"
 
 #include <SDL.h>
@@ -12,11 +12,14 @@
 #include <fstream>
 #include <glm/geometric.hpp>
 
+#include "app/atomic_file.h"
 #include "app/control_panel.h"
 #include "app/demo_state.h"
 #include "app/hand_tools.h"
 #include "app/headless_runner.h"
 #include "app/screenshot_names.h"
+#include "app/session_record.h"
+#include "app/side_by_side.h"
 #include "app/state_dump.h"
 #include "raster/png_writer.h"
 #include "sim/energy.h"
@@ -34,8 +37,10 @@ struct Window {
     SDL_Renderer* renderer = nullptr;
     SDL_Texture* texture = nullptr;
     int texture_width = 0, texture_height = 0;
-    raster::Framebuffer framebuffer{1, 1};
+    raster::Framebuffer framebuffer{1, 1};        // the whole view, every run's column
+    std::vector<raster::Framebuffer> run_frames;  // one per run when side by side
     bool save_window_next_frame = false;
+    int hand_column = 0;  // the column a drag or cut started in: it goes on in its coordinates
 };
 
 // The window as shown, panel included (Shift+F12).
@@ -80,8 +85,43 @@ void save_screenshot(DemoState& state, const Window& w) {
     }
 }
 
-ViewSize view_size(const Window& w) {
-    return {w.framebuffer.width(), w.framebuffer.height()};
+Columns columns_of(const DemoState& state, const Window& w) {
+    return Columns::split(w.framebuffer.width(), w.framebuffer.height(), state.run_count());
+}
+
+// The cursor in the coordinates of the column it is over, and that column.
+struct Pointer {
+    glm::vec2 at;
+    ViewSize view;
+    int column;
+};
+
+Pointer pointer(const DemoState& state, const Window& w) {
+    const Columns columns = columns_of(state, w);
+    const glm::vec2 window_point = cursor();
+    const int column = columns.column_at(window_point.x);
+    return {columns.local(window_point, column), columns.view(), column};
+}
+
+// The cursor in the coordinates of the column the hand started in.
+glm::vec2 hand_point(const DemoState& state, const Window& w) {
+    return columns_of(state, w).local(cursor(), w.hand_column);
+}
+
+void toggle_recording(DemoState& state) {
+    if (!state.recording) {
+        state.start_recording();
+        state.say("recording: the scene restarted; F5 again stops and saves");
+        return;
+    }
+    const SessionRecord record = state.stop_recording();
+    const std::string path = next_free_path(".", "weft-session", "toml");
+    std::string error;
+    if (write_file_atomically(path, session_to_toml(record), false, error))
+        state.say("saved the session (" + std::to_string(record.events.size()) + " events, " +
+                  std::to_string(record.steps) + " steps) to " + path + "; weft --replay " + path);
+    else
+        state.say("could not save the session: " + error);
 }
 
 // Returns false when the user quits.
@@ -117,35 +157,46 @@ bool handle_event(const SDL_Event& event, DemoState& state, Window& w) {
             case SDLK_c:
                 state.rig = state.initial_rig;
                 break;
-            case SDLK_t:
-                state.toggle_pin(cursor(), view_size(w));
+            case SDLK_t: {
+                const Pointer p = pointer(state, w);
+                state.toggle_pin(p.at, p.view, p.column);
+                break;
+            }
+            case SDLK_F5:
+                toggle_recording(state);
                 break;
             case SDLK_u:
                 state.release_all_pins();
                 break;
-            case SDLK_SPACE:
-                state.grab(cursor(), view_size(w));
+            case SDLK_SPACE: {
+                const Pointer p = pointer(state, w);
+                w.hand_column = p.column;
+                state.grab(p.at, p.view, p.column);
                 break;
+            }
             default:
                 break;
         }
     }
     if (event.type == SDL_KEYUP && event.key.keysym.sym == SDLK_SPACE) state.let_go();
     if (event.type == SDL_MOUSEBUTTONDOWN && !io.WantCaptureMouse) {
+        const Pointer p = pointer(state, w);
+        if (event.button.button != SDL_BUTTON_MIDDLE) w.hand_column = p.column;
         if (event.button.button == SDL_BUTTON_LEFT)
-            state.grab(cursor(), view_size(w));
+            state.grab(p.at, p.view, p.column);
         else if (event.button.button == SDL_BUTTON_RIGHT)
-            state.start_cut(cursor());
+            state.start_cut(p.at);
         else if (event.button.button == SDL_BUTTON_MIDDLE)
-            state.toggle_pin(cursor(), view_size(w));
+            state.toggle_pin(p.at, p.view, p.column);
     }
     if (event.type == SDL_MOUSEBUTTONUP) {
         if (event.button.button == SDL_BUTTON_LEFT) state.let_go();
         if (event.button.button == SDL_BUTTON_RIGHT) state.end_cut();
     }
     if (event.type == SDL_MOUSEMOTION) {
-        state.pull(cursor(), view_size(w));
-        state.cut_to(cursor(), view_size(w));
+        const ViewSize view = columns_of(state, w).view();
+        state.pull(hand_point(state, w), view);
+        state.cut_to(hand_point(state, w), view, w.hand_column);
     }
     if (event.type == SDL_MOUSEWHEEL && !io.WantCaptureMouse)
         state.rig.zoom(static_cast<float>(event.wheel.y), 1.5f);
@@ -203,25 +254,75 @@ bool present_frame(DemoState& state, Window& w) {
         w.texture_width = width;
         w.texture_height = height;
     }
-    view::render_frame(w.framebuffer, state.rig.camera(), state.simulation.cloth(),
-                       state.cloth_view, state.frame_options, state.ground_height,
-                       state.simulation.colliders());
+    render_runs(w.framebuffer, w.run_frames, state, columns_of(state, w));
     SDL_UpdateTexture(w.texture, nullptr, w.framebuffer.colours().data(), width * 4);
     SDL_RenderCopy(w.renderer, w.texture, nullptr, nullptr);
     return true;
 }
 
+// Side by side: each column's run named at the top of its column, with its cost and energy.
+void draw_run_labels(const DemoState& state, const Window& w) {
+    if (state.run_count() < 2) return;
+    const Columns columns = columns_of(state, w);
+    double companions_seconds = 0.0;
+    for (const Companion& companion : state.companions) companions_seconds += companion.seconds;
+    for (int run = 0; run < state.run_count(); ++run) {
+        const Simulation& simulation = state.run(run);
+        const double seconds = run == 0
+                                   ? state.statistics.sim_seconds - companions_seconds
+                                   : state.companions[static_cast<std::size_t>(run - 1)].seconds;
+        const int recoveries =
+            run == 0 ? state.recovery.recoveries
+                     : state.companions[static_cast<std::size_t>(run - 1)].recovery.recoveries;
+        ImGui::SetNextWindowPos(ImVec2(static_cast<float>((run + 1) * columns.width) - 8.0f, 8.0f),
+                                ImGuiCond_Always, ImVec2(1.0f, 0.0f));
+        ImGui::SetNextWindowBgAlpha(0.55f);
+        char name[32];
+        std::snprintf(name, sizeof name, "run %d", run);
+        ImGui::Begin(name, nullptr,
+                     ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                         ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoFocusOnAppearing);
+        ImGui::Text("%s%s",
+                    run == 0 ? "main: " : "copy: ", integrator_name(simulation.integrator()));
+        ImGui::Text("dt %.3g ms   %.2f ms stepping/frame", simulation.dt() * 1e3, seconds * 1e3);
+        ImGui::Text("energy %.5g J   t = %.2f s",
+                    measure_energy(simulation.cloth(), simulation.force_field()).total(),
+                    simulation.time());
+        if (recoveries > 0) ImGui::Text("recovered %d times", recoveries);
+        ImGui::End();
+    }
+}
+
 }  // namespace
 
 int run_demo_window(const CommandLine& command_line, const char* default_scene_path) {
-    const std::string path = command_line.scene_path.value_or(default_scene_path);
-    std::optional<Scene> scene = load_checked_scene(path, command_line.overrides);
+    // The scene: the file's, or the one a replayed session started from.
+    std::optional<SessionRecord> replay;
+    std::string path = command_line.scene_path.value_or(default_scene_path);
+    std::optional<Scene> scene;
+    if (command_line.replay_path) {
+        std::string error;
+        replay = read_session_file(*command_line.replay_path, error);
+        if (!replay) {
+            std::fprintf(stderr, "error: %s\n", error.c_str());
+            return exit_bad_input;
+        }
+        path = *command_line.replay_path;
+        scene = load_scene_text(replay->scene_toml, path).scene;  // checked when read
+    } else {
+        scene = load_checked_scene(path, command_line.overrides);
+    }
     if (!scene) return exit_bad_input;
     if (SDL_Init(SDL_INIT_VIDEO) != 0) {
         std::fprintf(stderr, "error: cannot open a window: %s\n", SDL_GetError());
         return exit_bad_input;
     }
     DemoState state(path, command_line.overrides, *scene);
+    for (const CommandLine::Comparison& comparison : command_line.comparisons)
+        state.add_companion(*integrator_from_name(comparison.integrator),
+                            comparison.dt > 0.0 ? comparison.dt : scene->solver.dt);
+    if (replay) state.start_replay(*replay);
+    if (command_line.record_path) state.start_recording();
     Window w;
     const std::string title = "weft - " + scene->name;
     w.window = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
@@ -255,7 +356,8 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
         const double elapsed = now - last;
         last = now;
         move_camera(state, elapsed);
-        state.pull(cursor(), view_size(w));  // the camera may move under a held drag
+        // The camera may move under a held drag.
+        state.pull(hand_point(state, w), columns_of(state, w).view());
 
         // Step: as many fixed steps as keep simulated time with the clock, within budget.
         StepClock::Plan plan =
@@ -268,6 +370,12 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
         const double sim_start = now_seconds();
         const int steps = state.step(plan.steps);
         const double sim_seconds = now_seconds() - sim_start;
+        if (state.replay_finished()) {
+            state.say(state.replay_matches()
+                          ? "replay finished: the state is bit for bit the recorded one"
+                          : "replay finished: the state DIFFERS from the recorded one");
+            state.stop_replay();
+        }
         if (steps > 0) seconds_per_step = sim_seconds / steps;
         DemoStatistics& stats = state.statistics;
         stats.steps = steps;
@@ -284,6 +392,7 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
         draw_control_panel(state);
         draw_help_overlay(state.show_help);
         draw_status_overlay(state, now);
+        draw_run_labels(state, w);
         ImGui::Render();
 
         SDL_SetRenderDrawColor(w.renderer, 28, 30, 36, 255);
@@ -309,6 +418,14 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
             frames, seconds, static_cast<double>(frames) / seconds,
             1e3 * total_sim_seconds / static_cast<double>(frames),
             1e3 * total_raster_seconds / static_cast<double>(frames));
+    if (command_line.record_path && state.recording) {
+        std::string error;
+        if (write_file_atomically(*command_line.record_path,
+                                  session_to_toml(state.stop_recording()), true, error))
+            std::printf("session: %s\n", command_line.record_path->c_str());
+        else
+            std::fprintf(stderr, "error: %s\n", error.c_str());
+    }
     if (command_line.dump_path) {
         std::ofstream dump(*command_line.dump_path, std::ios::binary | std::ios::trunc);
         write_state_csv(state.simulation.cloth(), dump);

@@ -7,11 +7,14 @@
 #include <glm/geometric.hpp>
 #include <optional>
 
+#include "app/demo_state.h"
+#include "app/session_record.h"
 #include "app/state_dump.h"
 #include "raster/png_writer.h"
 #include "sim/energy.h"
 #include "sim/scene_loader.h"
 #include "sim/simulation.h"
+#include "sim/state_hash.h"
 #include "view/frame_renderer.h"
 
 namespace weft {
@@ -47,24 +50,55 @@ void print_divergence(const Simulation& simulation, const std::string& why) {
 
 }  // namespace
 
+namespace {
+
+// Opens the dump before running, so an unwritable path fails at once, not after the run.
+bool open_dump(const CommandLine& command_line, std::ofstream& dump) {
+    if (!command_line.dump_path) return true;
+    dump.open(*command_line.dump_path, std::ios::binary | std::ios::trunc);
+    if (dump) return true;
+    print_error(*command_line.dump_path, std::string("cannot write: ") + std::strerror(errno));
+    return false;
+}
+
+// Writes the dump and the screenshot asked for; false (after saying why) if one fails.
+bool write_outputs(const CommandLine& command_line, std::ofstream& dump,
+                   const Simulation& simulation) {
+    if (dump.is_open()) {
+        write_state_csv(simulation.cloth(), dump);
+        dump.flush();
+        if (!dump) {
+            print_error(*command_line.dump_path, "write failed");
+            return false;
+        }
+    }
+    if (command_line.screenshot_path) {
+        raster::Framebuffer framebuffer(command_line.screenshot_width,
+                                        command_line.screenshot_height);
+        view::ClothView cloth_view(simulation.cloth());
+        view::render_frame(framebuffer, view::scene_camera(simulation.scene()), simulation.cloth(),
+                           cloth_view, view::FrameOptions{},
+                           view::ground_height_below(simulation.cloth(), simulation.colliders()),
+                           simulation.colliders());
+        std::string error;
+        if (!raster::write_png(framebuffer, *command_line.screenshot_path, &error)) {
+            print_error(*command_line.screenshot_path, error);
+            return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
 int run_headless(const CommandLine& command_line) {
     std::optional<Scene> scene =
         load_checked_scene(*command_line.scene_path, command_line.overrides);
     if (!scene) return exit_bad_input;
-    // Open the dump before running, so an unwritable path fails at once, not after the run.
     std::ofstream dump;
-    if (command_line.dump_path) {
-        dump.open(*command_line.dump_path, std::ios::binary | std::ios::trunc);
-        if (!dump) {
-            print_error(*command_line.dump_path,
-                        std::string("cannot write: ") + std::strerror(errno));
-            return exit_bad_input;
-        }
-    }
+    if (!open_dump(command_line, dump)) return exit_bad_input;
 
     Simulation simulation(*scene);
-    const float ground_height =
-        view::ground_height_below(simulation.cloth(), simulation.colliders());
     int status = exit_ok;
     for (std::uint64_t step = 0; step < *command_line.steps; ++step) {
         StepReport report = simulation.step();
@@ -74,28 +108,32 @@ int run_headless(const CommandLine& command_line) {
             break;
         }
     }
-    if (dump.is_open()) {
-        // Also written on divergence: the state that was caught is what one wants to look at.
-        write_state_csv(simulation.cloth(), dump);
-        dump.flush();
-        if (!dump) {
-            print_error(*command_line.dump_path, "write failed");
-            return exit_bad_input;
-        }
-    }
-    if (command_line.screenshot_path) {
-        raster::Framebuffer framebuffer(command_line.screenshot_width,
-                                        command_line.screenshot_height);
-        view::ClothView cloth_view(simulation.cloth());
-        view::render_frame(framebuffer, view::scene_camera(*scene), simulation.cloth(), cloth_view,
-                           view::FrameOptions{}, ground_height, simulation.colliders());
-        std::string error;
-        if (!raster::write_png(framebuffer, *command_line.screenshot_path, &error)) {
-            print_error(*command_line.screenshot_path, error);
-            return exit_bad_input;
-        }
-    }
+    // Also written on divergence: the state that was caught is what one wants to look at.
+    if (!write_outputs(command_line, dump, simulation)) return exit_bad_input;
     return status;
+}
+
+int run_headless_replay(const CommandLine& command_line) {
+    const std::string& path = *command_line.replay_path;
+    std::string error;
+    std::optional<app::SessionRecord> record = app::read_session_file(path, error);
+    if (!record) {
+        std::fprintf(stderr, "error: %s\n", error.c_str());
+        return exit_bad_input;
+    }
+    std::ofstream dump;
+    if (!open_dump(command_line, dump)) return exit_bad_input;
+    SceneLoadResult scene = load_scene_text(record->scene_toml, path);  // checked when read
+    app::DemoState state(path, {}, *scene.scene);
+    state.start_replay(*record);
+    while (!state.replay_finished()) state.step(4096);
+    const bool matches = state.replay_matches();
+    std::printf("replayed %llu steps and %zu events of %s: final state hash %016llx %s\n",
+                static_cast<unsigned long long>(state.steps_run), record->events.size(),
+                path.c_str(), static_cast<unsigned long long>(hash_state(state.simulation.cloth())),
+                matches ? "matches the recording" : "DIFFERS from the recording");
+    if (!write_outputs(command_line, dump, state.simulation)) return exit_bad_input;
+    return matches ? exit_ok : exit_replay_differs;
 }
 
 }  // namespace weft

@@ -14,6 +14,7 @@ namespace weft {
 inline constexpr int exit_ok = 0;
 inline constexpr int exit_bad_input = 2;
 inline constexpr int exit_diverged = 3;
+inline constexpr int exit_replay_differs = 4;  // a headless replay did not end where recorded
 
 // Loads and checks a scene; prints warnings and the error (and returns nothing) when bad.
 std::optional<Scene> load_checked_scene(const std::string& path,
@@ -21,5 +22,10 @@ std::optional<Scene> load_checked_scene(const std::string& path,
 
 // weft --headless SCENE --steps N [--dump FILE]: exactly N steps of the scene's dt.
 int run_headless(const CommandLine& command_line);
+
+// weft --headless --replay SESSION [--dump FILE] [--screenshot IMAGE]: the recorded session
+// through the demo's own stepping (its recoveries included); 0 if it ends in the recorded
+// state bit for bit, exit_replay_differs if not.
+int run_headless_replay(const CommandLine& command_line);
 
 }  // namespace weft

@@ -22,6 +22,8 @@ int main(int argc, char** argv) {
         return weft::exit_ok;
     }
     try {
+        if (command_line.headless && command_line.replay_path)
+            return weft::run_headless_replay(command_line);
         if (command_line.headless) return weft::run_headless(command_line);
         return weft::app::run_demo_window(command_line, WEFT_DEFAULT_SCENE);
     } catch (const std::bad_alloc&) {

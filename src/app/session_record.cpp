@@ -2,8 +2,11 @@
 
 #include <toml++/toml.h>
 
+#include <cerrno>
 #include <cinttypes>
 #include <cstdio>
+#include <cstring>
+#include <fstream>
 #include <sstream>
 
 #include "sim/scene_loader.h"
@@ -254,6 +257,17 @@ std::optional<SessionRecord> session_from_toml(std::string_view text, const std:
         return std::nullopt;
     }
     return record;
+}
+
+std::optional<SessionRecord> read_session_file(const std::string& path, std::string& error) {
+    std::ifstream file(path, std::ios::binary);
+    if (!file) {
+        error = path + ": cannot read file: " + std::strerror(errno);
+        return std::nullopt;
+    }
+    std::ostringstream text;
+    text << file.rdbuf();
+    return session_from_toml(text.str(), path, error);
 }
 
 }  // namespace weft::app

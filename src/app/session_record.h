@@ -40,5 +40,7 @@ std::string session_to_toml(const SessionRecord& record);
 // "SOURCE:LINE:COL: what" (or "SOURCE: what").
 std::optional<SessionRecord> session_from_toml(std::string_view text, const std::string& source,
                                                std::string& error);
+// The same from a file; "PATH: cannot read ..." if it cannot be read.
+std::optional<SessionRecord> read_session_file(const std::string& path, std::string& error);
 
 }  // namespace weft::app

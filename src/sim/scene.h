@@ -6,6 +6,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace weft {
@@ -112,5 +113,7 @@ struct Scene {
 
 // Canonical spelling of an integrator in scene files ("symplectic-euler", ...).
 const char* integrator_name(Integrator integrator);
+// The integrator of that spelling, if any.
+std::optional<Integrator> integrator_from_name(std::string_view name);
 
 }  // namespace weft

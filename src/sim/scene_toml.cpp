@@ -33,6 +33,14 @@ const char* integrator_name(Integrator integrator) {
     return "unknown";
 }
 
+std::optional<Integrator> integrator_from_name(std::string_view name) {
+    for (Integrator integrator :
+         {Integrator::explicit_euler, Integrator::symplectic_euler, Integrator::verlet,
+          Integrator::velocity_verlet, Integrator::rk4, Integrator::implicit_euler})
+        if (name == integrator_name(integrator)) return integrator;
+    return std::nullopt;
+}
+
 namespace {
 
 // Reads a table of a spring family. For shear and bend, the table being there means the
@@ -276,8 +284,9 @@ SceneLoadResult load_scene_text(std::string_view toml_text, std::string_view sou
     SceneLoadResult result;
     const std::string source(source_name);
     if (auto unsafe = find_unsafe_non_ascii(toml_text)) {
-        result.error = SceneError{source + ":" + std::to_string(unsafe->line) + ":" + std::to_string(unsafe->column),
-                                  "non-ASCII character outside a string or comment"};
+        result.error = SceneError{
+            source + ":" + std::to_string(unsafe->line) + ":" + std::to_string(unsafe->column),
+            "non-ASCII character outside a string or comment"};
         return result;
     }
     toml::table root;

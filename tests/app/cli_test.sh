@@ -81,5 +81,30 @@ expect 2 '^error: --frobnicate: unknown option' -- --frobnicate
 expect 2 "^error: $work/nowhere/x.csv: cannot write" -- --headless "$scenes/hanging_sheet.toml" --steps 1 --dump "$work/nowhere/x.csv"
 expect 0 quiet -- --help
 
+# Replaying a recording headless (the window records; here a recording is written by hand):
+# status 0 when the state ends as recorded, 4 when it does not, 2 for a bad recording.
+scene_text=$(sed 's/\\/\\\\/g; s/"/\\"/g' "$scenes/hanging_sheet.toml" | awk '{ printf "%s\\n", $0 }')
+write_session() {  # write_session FILE HASH
+  printf 'format = 1\nsteps = 300\nfinal_state_hash = "%s"\nscene = "%s"\n\n[[events]]\nstep = 100\nkind = "release-pins"\n' \
+    "$2" "$scene_text" >"$1"
+}
+write_session "$work/session.toml" 0x0000000000000000
+expect 4 quiet -- --headless --replay "$work/session.toml" --dump "$work/replayed.csv"
+actual_hash=$(grep -o 'hash [0-9a-f]*' "$work/out" | cut -d' ' -f2)
+check "a replay reports the hash it reached" test -n "$actual_hash"
+check "the pins were released at step 100" awk -F, 'NR == 2 && $4 == 0.6 { exit 1 }' "$work/replayed.csv"
+write_session "$work/session.toml" "0x$actual_hash"
+expect 0 quiet -- --headless --replay "$work/session.toml"
+check "a matching replay says so" grep -q "matches the recording" "$work/out"
+printf 'format = 1\nsteps = 10\nfinal_state_hash = "0x00"\nscene = ""\n' >"$work/bad_session.toml"
+expect 2 "^error: $work/bad_session.toml:3:" -- --headless --replay "$work/bad_session.toml"
+expect 2 "^error: $work/none.toml: cannot read" -- --headless --replay "$work/none.toml"
+expect 2 '^error: .*: --replay takes the scene from the recording' -- --headless --replay "$work/session.toml" "$scenes/hanging_sheet.toml"
+expect 2 '^error: --set: ' -- --replay "$work/session.toml" --set solver.dt=0.001
+expect 2 '^error: --compare: expects METHOD' -- --compare leapfrog
+expect 2 '^error: --compare: expects a dt' -- --compare rk4=0
+expect 2 '^error: --compare: only applies in the window' -- --headless "$scenes/hanging_sheet.toml" --steps 1 --compare rk4
+expect 2 '^error: --record: only applies in the window' -- --headless "$scenes/hanging_sheet.toml" --steps 1 --record "$work/r.toml"
+
 echo "$passes passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -3,7 +3,9 @@
 #   1. the camera keys change the view (two F12 screenshots differ);
 #   2. space + mouse on the cloth pulls the cloth where the mouse went (state dumped when
 #      the window closes, while still held, against an undisturbed run);
-#   3. space + mouse on empty background leaves the cloth as an undisturbed run leaves it.
+#   3. space + mouse on empty background leaves the cloth as an undisturbed run leaves it;
+#   4. side by side (--compare rk4) one drag moves both runs' columns, and the session it
+#      recorded (--record) replays headless to the same state bit for bit.
 # Usage: window_e2e_test.sh WEFT PNG_DIFF SOURCE_DIR
 set -uo pipefail
 weft=$(realpath "$1")
@@ -32,13 +34,16 @@ failures=0
 passes=0
 check() { if "$@"; then passes=$((passes + 1)); else echo "FAIL: $*"; failures=$((failures + 1)); fi; }
 
-# Starts weft in $work/$1, waits for its window; sets $weft_pid and $window.
+# Starts weft in $work/$1 (further arguments go to weft), waits for its window; sets
+# $weft_pid and $window.
 start_weft() {
-  mkdir -p "$work/$1"
-  (cd "$work/$1" && exec "$weft" "$scene" --size 800x600 --dump "$work/$1/state.csv" >"$work/$1/out.log" 2>&1) &
+  local name=$1
+  shift
+  mkdir -p "$work/$name"
+  (cd "$work/$name" && exec "$weft" "$scene" --size 800x600 --dump "$work/$name/state.csv" "$@" >"$work/$name/out.log" 2>&1) &
   weft_pid=$!
   window=$(timeout 20 xdotool search --sync --name "weft - e2e sheet" | head -1)
-  [ -n "$window" ] || { echo "FAIL: no weft window appeared"; cat "$work/$1/out.log"; exit 1; }
+  [ -n "$window" ] || { echo "FAIL: no weft window appeared"; cat "$work/$name/out.log"; exit 1; }
   sleep 2.5  # the sheet settles
 }
 quit_weft() {
@@ -97,6 +102,37 @@ largest=$(paste -d, <(tail -n +2 "$work/rest/state.csv") <(tail -n +2 "$work/mis
   awk -F, '{ for (k = 3; k <= 5; k++) { d = $k - $(k + 8); if (d < 0) d = -d; if (d > m) m = d } } END { print m + 0 }')
 echo "missed drag: largest difference from the undisturbed run $largest m"
 check awk -v d="$largest" 'BEGIN { exit !(d < 0.002) }'
+
+# --- 4. side by side, recorded, replayed ------------------------------------------------------
+# Two columns of 400 x 600: the sheet's centre is at (200, 300) in the left one (the main run,
+# symplectic Euler) and (600, 300) in the right one (RK4). The drag starts on the right copy.
+start_weft side --compare rk4 --record "$work/side/session.toml"
+xdotool key --window "$window" F12
+sleep 0.5
+xdotool mousemove --window "$window" 590 380
+sleep 0.2
+xdotool keydown --window "$window" space
+for step in $(seq 1 10); do xdotool mousemove --window "$window" $((590 + 15 * step)) 380; sleep 0.05; done
+sleep 0.8
+xdotool key --window "$window" F12
+sleep 0.5
+xdotool keyup --window "$window" space
+sleep 0.5
+quit_weft
+shots=("$work"/side/weft-screenshot-*.png)
+check test "${#shots[@]}" -eq 2
+left=$("$png_diff" "${shots[0]}" "${shots[1]}" 0 400)
+right=$("$png_diff" "${shots[0]}" "${shots[1]}" 400 800)
+echo "side by side: the drag changed $left of the main run's column and $right of the copy's"
+check awk -v f="$left" 'BEGIN { exit !(f > 0.01) }'
+check awk -v f="$right" 'BEGIN { exit !(f > 0.01) }'
+check test -s "$work/side/session.toml"
+replay_output=$("$weft" --headless --replay "$work/side/session.toml" --dump "$work/side/replayed.csv")
+replay_status=$?
+echo "$replay_output"
+check test "$replay_status" -eq 0
+check grep -q "matches the recording" <<<"$replay_output"
+check cmp -s "$work/side/state.csv" "$work/side/replayed.csv"
 
 echo "$passes passed, $failures failed"
 [ "$failures" -eq 0 ]

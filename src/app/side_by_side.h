@@ -1,0 +1,32 @@
+// Runs side by side: the view split into one column per run (the main run first, then its
+// copies), each drawn through the same camera, and the cursor acting on the run of the
+// column it is in. SDL-free, so the split and the drawing are tested without a window.
+#pragma once
+
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "app/demo_state.h"
+#include "raster/framebuffer.h"
+
+namespace weft::app {
+
+struct Columns {
+    int count = 1;   // runs shown
+    int width = 1;   // px, of each column; an uneven split leaves the last pixels background
+    int height = 1;  // px
+
+    static Columns split(int view_width, int view_height, int runs);
+    int column_at(float window_x) const;  // the column under x, clamped to the columns
+    // A window point in the coordinates of `column`'s own view.
+    glm::vec2 local(const glm::vec2& window_point, int column) const;
+    ViewSize view() const { return {width, height}; }
+};
+
+// Draws every run of `state` into its column of `framebuffer` (resized to the view), through
+// `scratch` framebuffers kept between frames. With one run it draws straight into it.
+void render_runs(raster::Framebuffer& framebuffer, std::vector<raster::Framebuffer>& scratch,
+                 DemoState& state, const Columns& columns);
+
+}  // namespace weft::app

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Fuzzes the scene loader and --set parsing with libFuzzer (clang, ASan + UBSan), seeded
-# with assets/scenes and the inputs earlier runs found (fuzz/regressions).
-#   scripts/fuzz.sh            a short run: 60 s (what CI does)
-#   scripts/fuzz.sh 3600       a long run: one hour; new findings land in ./crash-* files
+# Fuzzes the scene loader and --set parsing, then the session recordings that --replay reads
+# (each replayed when small), with libFuzzer (clang, ASan + UBSan), seeded with
+# assets/scenes, fuzz/sessions and the inputs earlier runs found (fuzz/regressions).
+#   scripts/fuzz.sh            a short run: 60 s of scenes, 30 s of sessions (what CI does)
+#   scripts/fuzz.sh 3600       a long run: an hour and a half hour; findings land in ./crash-*
 # Inputs that crash, hang (> 10 s) or use more than 2 GiB fail the run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,7 +23,7 @@ fi
 scripts/setup.sh
 
 cmake --preset fuzz >/dev/null
-cmake --build --preset fuzz -j 2 --target weft_scene_fuzzer
+cmake --build --preset fuzz -j 2 --target weft_scene_fuzzer weft_session_fuzzer
 fuzzer=build/fuzz/fuzz/weft_scene_fuzzer
 # Every earlier finding first: each must now load or be refused cleanly.
 "$fuzzer" -rss_limit_mb=2048 -timeout=10 fuzz/regressions/*
@@ -31,3 +32,11 @@ mkdir -p "$corpus"
 cp -n assets/scenes/*.toml "$corpus"/
 "$fuzzer" "$corpus" -dict=fuzz/dictionary/scene.dict -max_total_time="$seconds" \
   -rss_limit_mb=2048 -timeout=10 -max_len=4096 -print_final_stats=1 2>&1 | tail -n 12
+
+session_fuzzer=build/fuzz/fuzz/weft_session_fuzzer
+session_corpus=build/fuzz/session-corpus
+mkdir -p "$session_corpus"
+cp -n fuzz/sessions/*.toml "$session_corpus"/
+"$session_fuzzer" "$session_corpus" -dict=fuzz/dictionary/scene.dict \
+  -max_total_time=$((seconds / 2)) -rss_limit_mb=2048 -timeout=10 -max_len=8192 \
+  -print_final_stats=1 2>&1 | tail -n 12

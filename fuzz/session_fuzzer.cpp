@@ -1,0 +1,41 @@
+// libFuzzer target: session recordings (weft --replay FILE). Every input must either read or
+// give an error that names where and what; none may crash, hang or allocate without bound.
+// A recording that reads and is small (a few thousand steps of a small cloth) is also
+// replayed through the demo's own stepping, so events the reader lets through (a grab of a
+// particle that does not exist, a cut of springs that are not there, parameters that blow
+// the cloth up) cannot crash the replay.
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+#include <string_view>
+
+#include "app/demo_state.h"
+#include "app/session_record.h"
+#include "sim/scene_loader.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const std::string_view text(reinterpret_cast<const char*>(data), size);
+    std::string error;
+    const auto record = weft::app::session_from_toml(text, "fuzz.toml", error);
+    if (!record) {
+        if (error.empty()) std::abort();  // a refusal must say where and what
+        return 0;
+    }
+    const weft::SceneLoadResult scene = weft::load_scene_text(record->scene_toml, "scene");
+    if (!scene.ok()) std::abort();  // the reader checked it
+    const long long particles = static_cast<long long>(scene.scene->cloth.rows) * scene.scene->cloth.cols;
+    if (particles > 1024 || record->steps > 4000) return 0;  // only slow, not wrong
+    for (const auto& timed : record->events)
+        if (timed.event.kind == weft::app::ClothEvent::Kind::parameters) {
+            const weft::SceneLoadResult changed = weft::load_scene_text(timed.event.scene_toml, "p");
+            if (!changed.ok()) std::abort();  // the reader checked it
+            if (static_cast<long long>(changed.scene->cloth.rows) * changed.scene->cloth.cols > 1024)
+                return 0;
+        }
+    weft::app::DemoState state("fuzz.toml", {}, *scene.scene);
+    state.start_replay(*record);
+    while (!state.replay_finished()) state.step(512);
+    (void)state.replay_matches();
+    return 0;
+}

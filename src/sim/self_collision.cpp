@@ -20,28 +20,35 @@ long long cell_coordinate(double position, double cell_size) {
 
 std::size_t SelfCollision::hash_cell(long long cx, long long cy, long long cz) const {
     // Large primes spread neighbouring cells over the table; collisions only add candidates.
-    // Unsigned arithmetic: wrapping is the intent.
+    // Unsigned arithmetic: wrapping is the intent. The table size is a power of two, so the
+    // slot is a mask, not a division (this runs 27 times per particle and pass).
     const std::uint64_t h = (static_cast<std::uint64_t>(cx) * 92837111u) ^
                             (static_cast<std::uint64_t>(cy) * 689287499u) ^
                             (static_cast<std::uint64_t>(cz) * 283923481u);
-    return static_cast<std::size_t>(h % (cell_start_.size() - 1));
-}
-
-std::size_t SelfCollision::cell_of(const Vec3& x) const {
-    return hash_cell(cell_coordinate(x.x, thickness_), cell_coordinate(x.y, thickness_),
-                     cell_coordinate(x.z, thickness_));
+    return static_cast<std::size_t>(h & slot_mask_);
 }
 
 void SelfCollision::rebuild_hash(const Cloth& cloth) {
     const std::size_t count = cloth.particle_count();
-    // Twice as many slots as particles keeps the chains short.
-    cell_start_.assign(2 * count + 1, 0);
+    // At least twice as many slots as particles keeps the chains short.
+    std::size_t slots = 1;
+    while (slots < 2 * count) slots *= 2;
+    slot_mask_ = slots - 1;
+    cell_start_.assign(slots + 1, 0);
     cell_entries_.resize(count);
-    for (const Vec3& x : cloth.positions) ++cell_start_[cell_of(x)];
+    cells_.resize(count);
+    slots_.resize(count);
+    for (std::size_t p = 0; p < count; ++p) {
+        const Vec3& x = cloth.positions[p];
+        cells_[p] = {cell_coordinate(x.x, thickness_), cell_coordinate(x.y, thickness_),
+                     cell_coordinate(x.z, thickness_)};
+        slots_[p] = static_cast<std::uint32_t>(hash_cell(cells_[p][0], cells_[p][1], cells_[p][2]));
+        ++cell_start_[slots_[p]];
+    }
     for (std::size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
     // Fill from the back so each cell's entries end up in ascending particle order.
     for (std::size_t p = count; p-- > 0;)
-        cell_entries_[--cell_start_[cell_of(cloth.positions[p])]] = static_cast<std::uint32_t>(p);
+        cell_entries_[--cell_start_[slots_[p]]] = static_cast<std::uint32_t>(p);
 }
 
 void SelfCollision::rebuild_joined_pairs(const Cloth& cloth) {
@@ -66,9 +73,7 @@ void SelfCollision::find_pairs(const Cloth& cloth,
     const double thickness_squared = thickness_ * thickness_;
     for (std::size_t p = 0; p < cloth.particle_count(); ++p) {
         const Vec3& x = cloth.positions[p];
-        const long long cx = cell_coordinate(x.x, thickness_);
-        const long long cy = cell_coordinate(x.y, thickness_);
-        const long long cz = cell_coordinate(x.z, thickness_);
+        const auto [cx, cy, cz] = cells_[p];
         const std::size_t first_pair = pairs.size();
         for (long long dx = -1; dx <= 1; ++dx)
             for (long long dy = -1; dy <= 1; ++dy)

@@ -6,6 +6,7 @@
 // when the list of joined pairs is rebuilt — so it stays correct across tearing.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -49,13 +50,15 @@ class SelfCollision {
     void rebuild_hash(const Cloth& cloth);
     void rebuild_joined_pairs(const Cloth& cloth);
     bool joined(std::uint32_t a, std::uint32_t b) const;
-    std::size_t cell_of(const Vec3& x) const;
     std::size_t hash_cell(long long cx, long long cy, long long cz) const;
 
     double thickness_;
-    std::vector<std::uint32_t> cell_start_;    // prefix sums over the hash table, size + 1
-    std::vector<std::uint32_t> cell_entries_;  // particle indices sorted by cell
-    std::vector<std::uint64_t> joined_pairs_;  // sorted edge keys of the live springs
+    std::size_t slot_mask_ = 0;                    // hash table size - 1 (a power of two)
+    std::vector<std::array<long long, 3>> cells_;  // each particle's cell (x, y, z)
+    std::vector<std::uint32_t> slots_;             // each particle's hash table slot
+    std::vector<std::uint32_t> cell_start_;        // prefix sums over the hash table, size + 1
+    std::vector<std::uint32_t> cell_entries_;      // particle indices sorted by cell
+    std::vector<std::uint64_t> joined_pairs_;      // sorted edge keys of the live springs
     std::size_t joined_spring_count_ = static_cast<std::size_t>(-1);
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs_;
 };

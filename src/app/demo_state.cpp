@@ -135,9 +135,15 @@ int DemoState::step(int steps) {
             Companion& companion = companions[c];
             const auto started = std::chrono::steady_clock::now();
             std::string companion_why;
-            while (companion.simulation.time() + 0.5 * companion.simulation.dt() <=
-                   simulation.time()) {
-                if (!companion.recovery.step(companion.simulation, restart_dt, companion_why)) {
+            // At most one step more than keeps pace: a copy that rolled back or restarted
+            // catches up over the following steps instead of stalling this one.
+            int budget =
+                static_cast<int>(std::ceil(simulation.dt() / companion.simulation.dt())) + 1;
+            while (budget-- > 0 &&
+                   companion.simulation.time() + 0.5 * companion.simulation.dt() <=
+                       simulation.time()) {
+                if (!companion.recovery.step(companion.simulation, companion.restart_dt,
+                                             companion_why)) {
                     companion.cloth_view = view::ClothView(companion.simulation.cloth());
                     say("copy " + std::to_string(c + 1) + ": " + companion_why);
                     break;
@@ -166,7 +172,7 @@ const Simulation& DemoState::run(int index) const {
 }
 
 void DemoState::add_companion(Integrator integrator, double dt) {
-    Companion companion{simulation, view::ClothView(simulation.cloth()), {}, 0.0};
+    Companion companion{simulation, view::ClothView(simulation.cloth()), {}, dt, 0.0};
     companion.simulation.set_integrator(integrator);
     companion.simulation.set_dt(dt);
     companions.push_back(std::move(companion));
@@ -187,6 +193,7 @@ std::optional<std::string> DemoState::change_companion(std::size_t index,
     if (!(same_but_solver == companion.scene()))
         return "a copy differs from the main run only in its integrator and dt";
     companion.set_parameters(*checked.scene);
+    companions[index].restart_dt = checked.scene->solver.dt;
     return std::nullopt;
 }
 

@@ -72,7 +72,8 @@ struct Companion {
     Simulation simulation;
     view::ClothView cloth_view;
     Recovery recovery;
-    double seconds = 0.0;  // stepping in the last frame, s
+    double restart_dt = 0.0;  // s, its own dt as chosen: what a hopeless run restarts with
+    double seconds = 0.0;     // stepping in the last frame, s
 };
 
 struct DemoState {

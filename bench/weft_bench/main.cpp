@@ -2,7 +2,8 @@
 //   weft-bench precision [SCENE.toml]... [--set K=V]... [--out DIR] [--repeats N]
 //   weft-bench stability [SCENE.toml] [--sweep grid|mass|stiffness]... [--set K=V]...
 //                        [--out DIR] [--duration SECONDS]
-//   weft-bench throughput [SCENE.toml] [--set K=V]... [--out DIR]
+//   weft-bench throughput [SCENE.toml] [--set K=V]... [--out DIR] [--sizes N,N,...]
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -22,7 +23,8 @@ int usage(const char* problem) {
         "usage:\n"
         "  weft-bench precision [SCENE.toml]... [--set K=V]... [--out DIR] [--repeats N]\n"
         "  weft-bench stability [SCENE.toml] [--sweep grid|mass|stiffness]... [--set K=V]...\n"
-        "                       [--out DIR] [--duration SECONDS]\n");
+        "                       [--out DIR] [--duration SECONDS]\n"
+        "  weft-bench throughput [SCENE.toml] [--set K=V]... [--out DIR] [--sizes N,N,...]\n");
     return 2;
 }
 
@@ -36,6 +38,7 @@ int main(int argc, char** argv) {
     std::string out_dir = "bench-out";
     int repeats = 3;
     double duration = 0.5;
+    std::vector<int> sizes;  // throughput: particles per side (default: the study's own)
     for (std::size_t a = 1; a < args.size(); ++a) {
         const std::string& arg = args[a];
         const bool has_value = a + 1 < args.size();
@@ -47,7 +50,16 @@ int main(int argc, char** argv) {
             sweeps.push_back(args[++a]);
         else if (arg == "--repeats" && has_value)
             repeats = std::max(1, std::atoi(args[++a].c_str()));
-        else if (arg == "--duration" && has_value)
+        else if (arg == "--sizes" && has_value) {
+            const std::string list = args[++a];
+            for (std::size_t at = 0; at < list.size();) {
+                const std::size_t comma = std::min(list.find(',', at), list.size());
+                const int n = std::atoi(list.substr(at, comma - at).c_str());
+                if (n < 3 || n > 4096) return usage("--sizes takes sides from 3 to 4096");
+                sizes.push_back(n);
+                at = comma + 1;
+            }
+        } else if (arg == "--duration" && has_value)
             duration = std::atof(args[++a].c_str());
         else if (arg.rfind("--", 0) == 0)
             return usage(("unknown or incomplete option " + arg).c_str());
@@ -71,7 +83,9 @@ int main(int argc, char** argv) {
     if (study == "throughput") {
         if (scenes.size() > 1) return usage("throughput takes one scene");
         const std::string scene = scenes.empty() ? scenes_dir + "/hanging_sheet.toml" : scenes[0];
-        return weft::bench::run_throughput_study({scene, overrides, out_dir});
+        weft::bench::ThroughputOptions options{scene, overrides, out_dir};
+        if (!sizes.empty()) options.sizes = sizes;
+        return weft::bench::run_throughput_study(options);
     }
     return usage(("unknown study '" + study + "'").c_str());
 }

@@ -9,11 +9,12 @@
 
 #include "sim/cloth.h"
 #include "sim/colliders.h"
+#include "sim/divergence.h"
 #include "sim/drag.h"
-#include "sim/self_collision.h"
 #include "sim/force_pass.h"
 #include "sim/integrators/integrator.h"
 #include "sim/scene.h"
+#include "sim/self_collision.h"
 #include "sim/topology_edits.h"
 
 namespace weft {
@@ -111,6 +112,7 @@ class Simulation {
     std::vector<Collider> colliders_;
     bool has_repulsion_ = false;  // any collider with the repulsion response
     std::optional<SelfCollision> self_collision_;
+    DivergenceGuard divergence_guard_;
     double time_ = 0.0;
     std::uint64_t steps_taken_ = 0;
 };

@@ -10,6 +10,7 @@ void after_springs_removed(Cloth& cloth, std::vector<std::uint64_t>& removed_edg
     // Removal kept the order, but the colour boundaries moved; colouring again is cheap next
     // to the event that removed the springs.
     for (SpringGroup& group : cloth.spring_groups) colour_springs(group, cloth.particle_count());
+    build_grid_stencil(cloth);  // the removed springs become masked, dead stencil entries
     std::sort(removed_edges.begin(), removed_edges.end());
     auto removed = [&](std::uint32_t a, std::uint32_t b) {
         return std::binary_search(removed_edges.begin(), removed_edges.end(), edge_key(a, b));

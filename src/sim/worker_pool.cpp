@@ -14,7 +14,8 @@ int default_thread_count() {
 }
 
 WorkerPool::WorkerPool(int threads) {
-    for (int index = 1; index < std::max(1, threads); ++index) workers_.emplace_back([this, index] { worker_loop(index); });
+    for (int index = 1; index < std::max(1, threads); ++index)
+        workers_.emplace_back([this, index] { worker_loop(index); });
 }
 
 WorkerPool::~WorkerPool() {
@@ -31,7 +32,7 @@ void WorkerPool::run_slice(int slice) {
     const std::size_t slices = static_cast<std::size_t>(thread_count());
     const std::size_t begin = count_ * static_cast<std::size_t>(slice) / slices;
     const std::size_t end = count_ * (static_cast<std::size_t>(slice) + 1) / slices;
-    if (begin < end) (*body_)(begin, end);
+    if (begin < end) trampoline_(callable_, begin, end);
 }
 
 void WorkerPool::worker_loop(int index) {
@@ -39,7 +40,8 @@ void WorkerPool::worker_loop(int index) {
     while (true) {
         // Spin a little (the next loop usually follows within microseconds), then sleep.
         int spins = 0;
-        while (generation_.load(std::memory_order_acquire) == seen && ++spins < 2000) std::this_thread::yield();
+        while (generation_.load(std::memory_order_acquire) == seen && ++spins < 2000)
+            std::this_thread::yield();
         if (generation_.load(std::memory_order_acquire) == seen) {
             std::unique_lock lock(mutex_);
             wake_.wait(lock, [&] { return generation_.load() != seen; });
@@ -51,12 +53,13 @@ void WorkerPool::worker_loop(int index) {
     }
 }
 
-void WorkerPool::parallel_for(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
+void WorkerPool::run(std::size_t count, void* callable, Trampoline trampoline) {
     if (workers_.empty()) {
-        if (count > 0) body(0, count);
+        if (count > 0) trampoline(callable, 0, count);
         return;
     }
-    body_ = &body;
+    callable_ = callable;
+    trampoline_ = trampoline;
     count_ = count;
     remaining_.store(static_cast<int>(workers_.size()), std::memory_order_release);
     {

@@ -9,15 +9,15 @@
 #include <atomic>
 #include <condition_variable>
 #include <cstddef>
-#include <functional>
 #include <mutex>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 namespace weft {
 
 class WorkerPool {
-public:
+  public:
     // `threads` counts the calling thread too: 1 means no extra threads at all.
     explicit WorkerPool(int threads);
     ~WorkerPool();
@@ -27,15 +27,27 @@ public:
     int thread_count() const { return static_cast<int>(workers_.size()) + 1; }
 
     // Runs body(begin, end) over [0, count) split into thread_count() contiguous slices,
-    // the calling thread taking the first; returns when all are done.
-    void parallel_for(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body);
+    // the calling thread taking the first; returns when all are done. The body is called
+    // through a plain pointer, never copied into a std::function: a step makes many such
+    // calls and none may allocate.
+    template <class Body>
+    void parallel_for(std::size_t count, Body&& body) {
+        using Callable = std::remove_reference_t<Body>;
+        run(count, const_cast<void*>(static_cast<const void*>(&body)),
+            [](void* callable, std::size_t begin, std::size_t end) {
+                (*static_cast<Callable*>(callable))(begin, end);
+            });
+    }
 
-private:
+  private:
+    using Trampoline = void (*)(void* callable, std::size_t begin, std::size_t end);
+    void run(std::size_t count, void* callable, Trampoline trampoline);
     void worker_loop(int index);
     void run_slice(int slice);
 
     std::vector<std::thread> workers_;
-    const std::function<void(std::size_t, std::size_t)>* body_ = nullptr;
+    void* callable_ = nullptr;
+    Trampoline trampoline_ = nullptr;
     std::size_t count_ = 0;
     std::atomic<std::uint64_t> generation_{0};
     std::atomic<int> remaining_{0};

@@ -11,8 +11,8 @@
 
 #include "precision_study.h"
 #include "stability_study.h"
-#include "throughput_study.h"
 #include "study.h"
+#include "throughput_study.h"
 
 namespace {
 

@@ -43,6 +43,9 @@ struct Window {
     SDL_Texture* texture = nullptr;
     int texture_width = 0, texture_height = 0;
     raster::Framebuffer framebuffer{1, 1};
+    // Threads that draw the frame in bands (the simulation has its own for stepping; the
+    // two never run at once).
+    WorkerPool draw_pool{default_thread_count()};
     bool save_window_next_frame = false;
 };
 
@@ -270,7 +273,7 @@ bool present_frame(DemoState& state, Window& w) {
     }
     view::render_frame(w.framebuffer, state.rig.camera(), state.simulation.cloth(),
                        state.cloth_view, state.frame_options, state.ground_height,
-                       state.simulation.colliders());
+                       state.simulation.colliders(), &w.draw_pool);
     SDL_UpdateTexture(w.texture, nullptr, w.framebuffer.colours().data(), width * 4);
     SDL_RenderCopy(w.renderer, w.texture, nullptr, nullptr);
     return true;
@@ -369,9 +372,11 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
 
     const double seconds = now_seconds() - started;
     if (frames > 0)
-        std::printf("%lld frames in %.1f s: %.1f fps, %.2f ms stepping and %.2f ms drawing per frame\n", frames,
-                    seconds, static_cast<double>(frames) / seconds, 1e3 * total_sim_seconds / static_cast<double>(frames),
-                    1e3 * total_raster_seconds / static_cast<double>(frames));
+        std::printf(
+            "%lld frames in %.1f s: %.1f fps, %.2f ms stepping and %.2f ms drawing per frame\n",
+            frames, seconds, static_cast<double>(frames) / seconds,
+            1e3 * total_sim_seconds / static_cast<double>(frames),
+            1e3 * total_raster_seconds / static_cast<double>(frames));
     if (command_line.dump_path) {
         std::ofstream dump(*command_line.dump_path, std::ios::binary | std::ios::trunc);
         write_state_csv(state.simulation.cloth(), dump);

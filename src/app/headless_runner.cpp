@@ -87,8 +87,9 @@ int run_headless(const CommandLine& command_line) {
         raster::Framebuffer framebuffer(command_line.screenshot_width,
                                         command_line.screenshot_height);
         view::ClothView cloth_view(simulation.cloth());
+        WorkerPool pool(default_thread_count());  // bands: the same image on any count
         view::render_frame(framebuffer, view::scene_camera(*scene), simulation.cloth(), cloth_view,
-                           view::FrameOptions{}, ground_height, simulation.colliders());
+                           view::FrameOptions{}, ground_height, simulation.colliders(), &pool);
         std::string error;
         if (!raster::write_png(framebuffer, *command_line.screenshot_path, &error)) {
             print_error(*command_line.screenshot_path, error);

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "sim/cloth.h"
-#include "sim/worker_pool.h"
+#include "parallel/worker_pool.h"
 
 namespace weft {
 

@@ -11,7 +11,7 @@
 #include <span>
 
 #include "sim/cloth.h"
-#include "sim/worker_pool.h"
+#include "parallel/worker_pool.h"
 
 namespace weft {
 

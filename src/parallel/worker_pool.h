@@ -1,6 +1,7 @@
 // WorkerPool: a few persistent threads that run the slices of one parallel loop and wait
-// for the next. Used by the force pass, which runs one loop per spring colour, so the
-// hand-off must be cheap: workers spin briefly on a generation counter before sleeping.
+// for the next. Used by sim (force pass, particle loops, divergence guard) and raster
+// (bands of the framebuffer); a step makes several such loops, so the hand-off must be
+// cheap: workers spin briefly on a generation counter before sleeping.
 //
 // Results never depend on the number of threads: callers split work so that each item is
 // written by exactly one slice, and the split itself does not change the arithmetic.

@@ -1,4 +1,4 @@
-#include "sim/worker_pool.h"
+#include "parallel/worker_pool.h"
 
 #include <algorithm>
 #include <cstdlib>

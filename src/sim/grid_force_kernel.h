@@ -57,4 +57,13 @@ bool rows_maybe_overstretched_baseline(const Job& job, double ratio_squared, int
 bool rows_maybe_overstretched_avx2(const Job& job, double ratio_squared, int row_begin,
                                    int row_end);
 
+// The divergence guard's particle sweep over interleaved arrays (x y z per particle):
+// whether a position or velocity is not finite, and whether some particle has moved from
+// its reference by |x - x_ref|² >= limit_squared.
+void sweep_particles_baseline(const double* x, const double* reference, const double* v,
+                              std::size_t count, double limit_squared, bool& non_finite,
+                              bool& moved);
+void sweep_particles_avx2(const double* x, const double* reference, const double* v,
+                          std::size_t count, double limit_squared, bool& non_finite, bool& moved);
+
 }  // namespace weft::grid_kernel

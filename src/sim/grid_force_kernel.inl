@@ -22,20 +22,25 @@ inline double* ring_row(double* base, std::size_t row_stride, int row) {
     return base + static_cast<std::size_t>(row % 3) * row_stride;
 }
 
+// Interleaved x y z into three per-component arrays (a function of its own, with
+// non-overlapping arguments, so it vectorises).
+void deinterleave(const double* __restrict xyz, double* __restrict x, double* __restrict y,
+                  double* __restrict z, std::size_t count) {
+    for (std::size_t c = 0; c < count; ++c) {
+        x[c] = xyz[3 * c];
+        y[c] = xyz[3 * c + 1];
+        z[c] = xyz[3 * c + 2];
+    }
+}
+
 // Per-component rows: component k of row slot s starts at state + (s * 6 + k) * padded.
 void load_state_row(const Job& job, int row, double* state_ring, std::size_t padded) {
     double* slot = ring_row(state_ring, 6 * padded, row) + row_padding;
     const std::size_t cols = static_cast<std::size_t>(job.cols);
     const double* x = job.positions + static_cast<std::size_t>(row) * cols * 3;
     const double* v = job.velocities + static_cast<std::size_t>(row) * cols * 3;
-    for (std::size_t c = 0; c < cols; ++c) {
-        slot[c] = x[3 * c];
-        slot[padded + c] = x[3 * c + 1];
-        slot[2 * padded + c] = x[3 * c + 2];
-        slot[3 * padded + c] = v[3 * c];
-        slot[4 * padded + c] = v[3 * c + 1];
-        slot[5 * padded + c] = v[3 * c + 2];
-    }
+    deinterleave(x, slot, slot + padded, slot + 2 * padded, cols);
+    deinterleave(v, slot + 3 * padded, slot + 4 * padded, slot + 5 * padded, cols);
 }
 
 // Spring forces of the springs of direction `direction` that start on row `row`, into
@@ -236,4 +241,26 @@ bool rows_maybe_overstretched(const Job& job, double ratio_squared, int row_begi
         }
     }
     return suspect != 0;
+}
+
+// The divergence guard's sweep over particles (divergence.cpp): flags a non-finite position
+// or velocity, and whether some particle has moved from its reference position by
+// |x - x_ref|² >= limit_squared. Branch-free, so it vectorises.
+void sweep_particles(const double* __restrict x, const double* __restrict reference,
+                     const double* __restrict v, std::size_t count, double limit_squared,
+                     bool& non_finite, bool& moved) {
+    unsigned bad = 0, far = 0;
+    for (std::size_t p = 0; p < count; ++p) {
+        const double dx = x[3 * p] - reference[3 * p], dy = x[3 * p + 1] - reference[3 * p + 1],
+                     dz = x[3 * p + 2] - reference[3 * p + 2];
+        const double moved_squared = dx * dx + dy * dy + dz * dz;
+        // x - x is 0 for a finite x, NaN otherwise; an overflowing sum is flagged too (the
+        // exact scan then decides).
+        const double velocity_check =
+            (v[3 * p] - v[3 * p]) + (v[3 * p + 1] - v[3 * p + 1]) + (v[3 * p + 2] - v[3 * p + 2]);
+        bad |= (moved_squared - moved_squared == 0.0) & (velocity_check == 0.0) ? 0u : 1u;
+        far |= moved_squared >= limit_squared ? 1u : 0u;
+    }
+    non_finite = bad != 0;
+    moved = far != 0;
 }

@@ -17,4 +17,10 @@ bool rows_maybe_overstretched_baseline(const Job& job, double ratio_squared, int
     return rows_maybe_overstretched(job, ratio_squared, row_begin, row_end);
 }
 
+void sweep_particles_baseline(const double* x, const double* reference, const double* v,
+                              std::size_t count, double limit_squared, bool& non_finite,
+                              bool& moved) {
+    sweep_particles(x, reference, v, count, limit_squared, non_finite, moved);
+}
+
 }  // namespace weft::grid_kernel

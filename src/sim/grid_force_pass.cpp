@@ -120,4 +120,29 @@ std::optional<bool> grid_springs_maybe_longer_than(const Cloth& cloth, double ra
     return suspect.load();
 }
 
+ParticleSweep sweep_particles(std::span<const Vec3> positions, std::span<const Vec3> reference,
+                              std::span<const Vec3> velocities, double limit_squared,
+                              WorkerPool* pool) {
+    const auto kernel = simd_level() == SimdLevel::avx2 ? grid_kernel::sweep_particles_avx2
+                                                        : grid_kernel::sweep_particles_baseline;
+    const std::size_t count = positions.size();
+    auto sweep = [&](std::size_t begin, std::size_t end, bool& non_finite, bool& moved) {
+        kernel(&positions[begin].x, &reference[begin].x, &velocities[begin].x, end - begin,
+               limit_squared, non_finite, moved);
+    };
+    ParticleSweep result;
+    if (!pool || pool->thread_count() <= 1 || count < min_particles_for_threads) {
+        if (count > 0) sweep(0, count, result.non_finite, result.moved);
+        return result;
+    }
+    std::atomic<bool> non_finite{false}, moved{false};
+    pool->parallel_for(count, [&](std::size_t begin, std::size_t end) {
+        bool slice_non_finite = false, slice_moved = false;
+        sweep(begin, end, slice_non_finite, slice_moved);
+        if (slice_non_finite) non_finite.store(true, std::memory_order_relaxed);
+        if (slice_moved) moved.store(true, std::memory_order_relaxed);
+    });
+    return {non_finite.load(), moved.load()};
+}
+
 }  // namespace weft

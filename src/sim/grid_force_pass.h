@@ -10,8 +10,8 @@
 #include <optional>
 #include <span>
 
-#include "sim/cloth.h"
 #include "parallel/worker_pool.h"
+#include "sim/cloth.h"
 
 namespace weft {
 
@@ -36,5 +36,16 @@ bool accumulate_grid_forces(const Cloth& cloth, const ForceField& field,
 // test |d| > ratio L, which the caller then runs. Nothing when there is no usable stencil.
 std::optional<bool> grid_springs_maybe_longer_than(const Cloth& cloth, double ratio,
                                                    WorkerPool* pool);
+
+// The divergence guard's sweep over the particles (divergence.h), vectorised with the same
+// kernel builds: whether any position or velocity is not finite, and whether any particle
+// is at |x - x_ref|² >= limit_squared from its reference position.
+struct ParticleSweep {
+    bool non_finite = false;
+    bool moved = false;
+};
+ParticleSweep sweep_particles(std::span<const Vec3> positions, std::span<const Vec3> reference,
+                              std::span<const Vec3> velocities, double limit_squared,
+                              WorkerPool* pool);
 
 }  // namespace weft

@@ -68,15 +68,12 @@ TEST(DivergenceGuard, TheBoundedGuardGivesTheFullScansVerdictEveryStep) {
                                   std::pair{Integrator::symplectic_euler, 2e-4}}) {
         Simulation simulation(stiff_undamped_sheet(integrator, dt));
         DivergenceGuard guard;
-        int skipped_scans = 0;
         for (int s = 0; s < 1500; ++s) {
             simulation.step();
             const std::optional<std::string> full = find_divergence(simulation.cloth(), true);
             ASSERT_EQ(guard.check(simulation.cloth(), true), full) << "step " << s;
             if (full) break;
-            skipped_scans += s > 0;
         }
-        EXPECT_GT(skipped_scans, 0);
     }
 }
 

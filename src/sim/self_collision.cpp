@@ -24,7 +24,10 @@ std::size_t SelfCollision::hash_cell(long long cx, long long cy, long long cz) c
     const std::uint64_t h = (static_cast<std::uint64_t>(cx) * 92837111u) ^
                             (static_cast<std::uint64_t>(cy) * 689287499u) ^
                             (static_cast<std::uint64_t>(cz) * 283923481u);
-    return static_cast<std::size_t>(h % (cell_start_.size() - 1));
+    // The table size is a power of two: a mask, not a 64-bit division, for each of the 27
+    // cells around every particle. Which slot a cell lands in only changes the candidates,
+    // never the pairs found (each is tested by distance, and the list is sorted).
+    return static_cast<std::size_t>(h & (cell_start_.size() - 2));
 }
 
 std::size_t SelfCollision::cell_of(const Vec3& x) const {
@@ -34,8 +37,10 @@ std::size_t SelfCollision::cell_of(const Vec3& x) const {
 
 void SelfCollision::rebuild_hash(const Cloth& cloth) {
     const std::size_t count = cloth.particle_count();
-    // Twice as many slots as particles keeps the chains short.
-    cell_start_.assign(2 * count + 1, 0);
+    // At least twice as many slots as particles keeps the chains short; a power of two.
+    std::size_t slots = 2;
+    while (slots < 2 * count) slots *= 2;
+    cell_start_.assign(slots + 1, 0);
     cell_entries_.resize(count);
     for (const Vec3& x : cloth.positions) ++cell_start_[cell_of(x)];
     for (std::size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];

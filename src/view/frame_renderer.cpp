@@ -86,6 +86,12 @@ void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera
                                     lighting, band);
             }
         }
+    };
+
+    // Lines and points come last, over the whole frame on the calling thread: every band
+    // would transform all their vertices again, which costs more than drawing them once.
+    auto draw_lines = [&] {
+        raster::LineStyle lines;
         if (options.wireframe)
             raster::draw_indexed_lines(framebuffer, camera, view.positions(),
                                        view.wireframe_edges(), raster::Rgba8{20, 20, 24, 255},
@@ -101,6 +107,7 @@ void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera
     const int threads = pool ? pool->thread_count() : 1;
     if (threads <= 1) {
         draw_band(framebuffer.bounds());
+        draw_lines();
         return;
     }
     // Two bands per thread, interleaved, so a cloth filling only part of the screen still
@@ -115,6 +122,7 @@ void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera
             }
         }
     });
+    draw_lines();
 }
 
 }  // namespace weft::view

@@ -14,8 +14,8 @@ int default_thread_count() {
 }
 
 WorkerPool::WorkerPool(int threads) {
-    for (int index = 1; index < std::max(1, threads); ++index)
-        workers_.emplace_back([this, index] { worker_loop(index); });
+    for (int index = 1; index < std::clamp(threads, 1, 64); ++index)
+        workers_.emplace_back([this] { worker_loop(); });
 }
 
 WorkerPool::~WorkerPool() {
@@ -28,14 +28,25 @@ WorkerPool::~WorkerPool() {
     for (std::thread& worker : workers_) worker.join();
 }
 
-void WorkerPool::run_slice(int slice) {
-    const std::size_t slices = static_cast<std::size_t>(thread_count());
-    const std::size_t begin = count_ * static_cast<std::size_t>(slice) / slices;
-    const std::size_t end = count_ * (static_cast<std::size_t>(slice) + 1) / slices;
+bool WorkerPool::run_one_slice(std::uint32_t generation) {
+    std::uint64_t claims = claims_.load(std::memory_order_acquire);
+    std::uint64_t slice = 0, slices = 0;
+    do {
+        if (static_cast<std::uint32_t>(claims >> 32) != generation) return false;
+        slices = (claims >> 16) & 0xffff;
+        slice = claims & 0xffff;
+        if (slice >= slices) return false;
+    } while (!claims_.compare_exchange_weak(claims, claims + 1, std::memory_order_acq_rel,
+                                            std::memory_order_acquire));
+    // The caller waits for this slice, so the loop's description stays valid meanwhile.
+    const std::size_t begin = count_ * slice / slices;
+    const std::size_t end = count_ * (slice + 1) / slices;
     if (begin < end) trampoline_(callable_, begin, end);
+    slices_done_.fetch_add(1, std::memory_order_acq_rel);
+    return true;
 }
 
-void WorkerPool::worker_loop(int index) {
+void WorkerPool::worker_loop() {
     std::uint64_t seen = 0;
     while (true) {
         // Spin a little (the next loop usually follows within microseconds), then sleep.
@@ -48,8 +59,8 @@ void WorkerPool::worker_loop(int index) {
         }
         seen = generation_.load(std::memory_order_acquire);
         if (stopping_) return;
-        run_slice(index);
-        remaining_.fetch_sub(1, std::memory_order_acq_rel);
+        while (run_one_slice(static_cast<std::uint32_t>(seen))) {
+        }
     }
 }
 
@@ -61,14 +72,18 @@ void WorkerPool::run(std::size_t count, void* callable, Trampoline trampoline) {
     callable_ = callable;
     trampoline_ = trampoline;
     count_ = count;
-    remaining_.store(static_cast<int>(workers_.size()), std::memory_order_release);
+    const auto slices = static_cast<std::uint64_t>(thread_count());
+    const std::uint32_t generation = ++current_generation_;
+    slices_done_.store(0, std::memory_order_relaxed);
+    claims_.store((std::uint64_t{generation} << 32) | (slices << 16), std::memory_order_release);
     {
         std::lock_guard lock(mutex_);
-        generation_.fetch_add(1, std::memory_order_acq_rel);
+        generation_.store(generation, std::memory_order_release);
     }
     wake_.notify_all();
-    run_slice(0);
-    while (remaining_.load(std::memory_order_acquire) > 0) std::this_thread::yield();
+    while (run_one_slice(generation)) {
+    }
+    while (slices_done_.load(std::memory_order_acquire) < slices) std::this_thread::yield();
 }
 
 }  // namespace weft

@@ -19,8 +19,7 @@ struct Direction {
     int col_step;                // dc
     double stiffness;            // N/m
     double damping;              // N·s/m
-    const double* rest_lengths;  // m, per start particle
-    const double* live;          // 1 where a live spring starts, else 0
+    const double* rest_lengths;  // m, per start particle; negative: no live spring there
 };
 
 struct Job {

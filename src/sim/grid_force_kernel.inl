@@ -77,7 +77,6 @@ void spring_row(const Job& job, const Direction& direction, int row, double* sta
     const double* __restrict wb = b + 5 * padded;
     const std::size_t first = static_cast<std::size_t>(row) * static_cast<std::size_t>(cols);
     const double* __restrict rest = direction.rest_lengths + first;
-    const double* __restrict live = direction.live + first;
     const double k = direction.stiffness;
     const double damping = direction.damping;
     double* __restrict fx = out_x + row_padding;
@@ -91,7 +90,8 @@ void spring_row(const Job& job, const Direction& direction, int row, double* sta
         // spring the divisor is l and the mask the live factor, to the last bit, and a masked
         // lane divides by 1 and never makes a NaN of its own.
         const double none = length > 0.0 ? 0.0 : 1.0;
-        const double mask = live[c] * (1.0 - none);
+        const double live = rest[c] >= 0.0 ? 1.0 : 0.0;
+        const double mask = live * (1.0 - none);
         // u = d · (1/l): one division instead of three. The divider is this loop's
         // bottleneck (with the square root); u differs from the general pass's d / l by at
         // most an ulp per component.
@@ -231,12 +231,12 @@ bool rows_maybe_overstretched(const Job& job, double ratio_squared, int row_begi
             const double* __restrict b =
                 job.positions + 3 * (static_cast<std::ptrdiff_t>(first) + offset);
             const double* __restrict rest = direction.rest_lengths + first;
-            const double* __restrict live = direction.live + first;
             for (std::size_t c = c_begin; c < c_end; ++c) {
                 const double dx = b[3 * c] - a[3 * c], dy = b[3 * c + 1] - a[3 * c + 1],
                              dz = b[3 * c + 2] - a[3 * c + 2];
                 const double limit = ratio_squared * rest[c] * rest[c];
-                suspect |= live[c] * (dx * dx + dy * dy + dz * dz) > limit ? 1u : 0u;
+                const double live = rest[c] >= 0.0 ? 1.0 : 0.0;
+                suspect |= live * (dx * dx + dy * dy + dz * dz) > limit ? 1u : 0u;
             }
         }
     }

@@ -43,12 +43,9 @@ bool describe_stencil(const Cloth& cloth, std::span<const Vec3> positions, grid_
     for (const GridStencilDirection& direction : cloth.grid_stencil.directions) {
         if (job.direction_count == grid_kernel::max_directions) return false;
         const SpringGroup& group = cloth.spring_groups[direction.group];
-        job.directions[job.direction_count++] = {direction.row_step,
-                                                 direction.col_step,
-                                                 group.stiffness,
-                                                 group.damping,
-                                                 direction.rest_lengths.data(),
-                                                 direction.live.data()};
+        job.directions[job.direction_count++] = {direction.row_step, direction.col_step,
+                                                 group.stiffness, group.damping,
+                                                 direction.rest_lengths.data()};
     }
     return true;
 }

@@ -43,8 +43,7 @@ void build_grid_stencil(Cloth& cloth) {
             direction.row_step = step[0];
             direction.col_step = step[1];
             direction.group = g;
-            direction.rest_lengths.assign(count, 0.0);
-            direction.live.assign(count, 0.0);
+            direction.rest_lengths.assign(count, no_spring);
             built.directions.push_back(std::move(direction));
         }
         for (const Spring& spring : group.springs) {
@@ -57,8 +56,8 @@ void build_grid_stencil(Cloth& cloth) {
                 GridStencilDirection& direction = built.directions[k];
                 if (row_j - row_i != direction.row_step || col_j - col_i != direction.col_step)
                     continue;
-                if (direction.live[spring.i] != 0.0) return;  // a duplicate: not a plain grid
-                direction.live[spring.i] = 1.0;
+                if (direction.rest_lengths[spring.i] >= 0.0) return;  // a duplicate: not a grid
+                if (!(spring.rest_length >= 0.0)) return;  // cannot be told from no_spring
                 direction.rest_lengths[spring.i] = spring.rest_length;
                 placed = true;
                 break;

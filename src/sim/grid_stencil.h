@@ -22,14 +22,16 @@ namespace weft {
 struct Cloth;
 
 struct GridStencilDirection {
-    int row_step = 0;                  // dr: the spring joins (r, c) to (r + dr, c + dc)
-    int col_step = 0;                  // dc
-    std::size_t group = 0;             // index into Cloth::spring_groups: material of the springs
-    std::vector<double> rest_lengths;  // m, per start particle r * cols + c (0 where none)
-    // 1 where a live spring starts at that particle, else 0: a factor rather than a flag,
-    // because mixing byte and double lanes stops the kernel's loops from vectorising.
-    std::vector<double> live;
+    int row_step = 0;       // dr: the spring joins (r, c) to (r + dr, c + dc)
+    int col_step = 0;       // dc
+    std::size_t group = 0;  // index into Cloth::spring_groups: material of the springs
+    // m, per start particle r * cols + c, of the live spring that starts there; negative
+    // (no_spring) where none does or it is dead. One array rather than lengths plus flags:
+    // the force pass reads it for every spring, and at 256² each array is 3 MB.
+    std::vector<double> rest_lengths;
 };
+
+inline constexpr double no_spring = -1.0;  // the rest length that marks a dead spring
 
 struct GridStencil {
     std::vector<GridStencilDirection> directions;  // empty: not a grid, use the general pass

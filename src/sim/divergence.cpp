@@ -142,7 +142,10 @@ std::optional<std::string> DivergenceGuard::check(const Cloth& cloth, bool check
         // a particle has moved: the scan can be skipped while 2 m < H. A margin of 1e-9,
         // relative to the lengths involved, covers rounding in l_ref, L, m and the exact
         // scan's own |d| (each off by parts in 1e16).
-        const double reach = 0.5 * (headroom_ - 1e-9 * (std::abs(headroom_) + length_scale_));
+        // (A cloth without springs has an infinite headroom: only finiteness to watch.)
+        const double reach = std::isinf(headroom_) && headroom_ > 0.0
+                                 ? headroom_
+                                 : 0.5 * (headroom_ - 1e-9 * (std::abs(headroom_) + length_scale_));
         const double limit_squared = !check_runaway_stretch
                                          ? std::numeric_limits<double>::infinity()
                                      : reach > 0.0 ? reach * reach * (1.0 - 1e-9)

@@ -5,7 +5,8 @@
 //                         [--duration SECONDS]
 //   weft-bench stability [SCENE.toml] [--sweep grid|mass|stiffness]... [--set K=V]...
 //                        [--out DIR] [--duration SECONDS]
-//   weft-bench throughput [SCENE.toml] [--set K=V]... [--out DIR]
+//   weft-bench throughput [SCENE.toml] [--set K=V]... [--out DIR] [--sizes N,N,...]
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -31,7 +32,7 @@ int usage(const char* problem) {
         "                        [--duration SECONDS]\n"
         "  weft-bench stability [SCENE.toml] [--sweep grid|mass|stiffness]... [--set K=V]...\n"
         "                       [--out DIR] [--duration SECONDS]\n"
-        "  weft-bench throughput [SCENE.toml] [--set K=V]... [--out DIR]\n");
+        "  weft-bench throughput [SCENE.toml] [--set K=V]... [--out DIR] [--sizes N,N,...]\n");
     return 2;
 }
 
@@ -45,6 +46,7 @@ int main(int argc, char** argv) {
     std::string out_dir = "bench-out";
     int repeats = 3;
     std::optional<double> duration;  // s; each study has its own default
+    std::vector<int> sizes;          // throughput: particles per side (default: the study's own)
     for (std::size_t a = 1; a < args.size(); ++a) {
         const std::string& arg = args[a];
         const bool has_value = a + 1 < args.size();
@@ -63,6 +65,16 @@ int main(int argc, char** argv) {
             std::string why;
             duration = weft::bench::parse_number_above(args[++a], 0.0, why);
             if (!duration) return usage(("--duration: " + why).c_str());
+        } else if (arg == "--sizes" && has_value) {
+            const std::string list = args[++a];
+            for (std::size_t at = 0; at <= list.size();) {
+                const std::size_t comma = std::min(list.find(',', at), list.size());
+                std::string why;
+                const auto side = weft::bench::parse_integer(list.substr(at, comma - at), 3, 4096, why);
+                if (!side) return usage(("--sizes: " + why).c_str());
+                sizes.push_back(static_cast<int>(*side));
+                at = comma + 1;
+            }
         } else if (arg.rfind("--", 0) == 0)
             return usage(("unknown or incomplete option " + arg).c_str());
         else
@@ -92,7 +104,9 @@ int main(int argc, char** argv) {
     if (study == "throughput") {
         if (scenes.size() > 1) return usage("throughput takes one scene");
         const std::string scene = scenes.empty() ? scenes_dir + "/hanging_sheet.toml" : scenes[0];
-        return weft::bench::run_throughput_study({scene, overrides, out_dir});
+        weft::bench::ThroughputOptions options{scene, overrides, out_dir};
+        if (!sizes.empty()) options.sizes = sizes;
+        return weft::bench::run_throughput_study(options);
     }
     return usage(("unknown study '" + study + "'").c_str());
 }

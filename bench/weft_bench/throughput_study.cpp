@@ -9,12 +9,13 @@
 #include <vector>
 
 #include "csv_file.h"
+#include "parallel/worker_pool.h"
 #include "plain_baseline.h"
 #include "plot.h"
 #include "raster/framebuffer.h"
 #include "sim/cloth_builder.h"
+#include "sim/grid_force_pass.h"
 #include "sim/stability_limit.h"
-#include "sim/worker_pool.h"
 #include "study.h"
 #include "view/frame_renderer.h"
 
@@ -33,7 +34,9 @@ double seconds_per_call(const std::function<void()>& work) {
             do {
                 work();
                 ++calls;
-            } while (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 0.2);
+            } while (
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() <
+                0.2);
         });
         samples.push_back(elapsed / static_cast<double>(calls));
     }
@@ -41,12 +44,54 @@ double seconds_per_call(const std::function<void()>& work) {
     return samples[1];
 }
 
+// Median seconds per call of each of several callables, measured in interleaved rounds (a
+// slice of each in turn, `rounds` times) so that load from other processes on the machine
+// falls on all of them alike; also the median over rounds of each one's time divided by the
+// first's, the ratio least disturbed by that load.
+struct Interleaved {
+    std::vector<double> seconds;         // median per callable
+    std::vector<double> ratio_to_first;  // median over rounds of seconds[k] / seconds[0]
+};
+Interleaved interleaved_seconds(const std::vector<std::function<void()>>& works, int rounds = 9,
+                                double slice_seconds = 0.08) {
+    for (const auto& work : works) work();
+    std::vector<std::vector<double>> samples(works.size());
+    for (int round = 0; round < rounds; ++round) {
+        for (std::size_t k = 0; k < works.size(); ++k) {
+            long long calls = 0;
+            const auto start = std::chrono::steady_clock::now();
+            double elapsed = 0.0;
+            do {
+                works[k]();
+                ++calls;
+                elapsed =
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            } while (elapsed < slice_seconds);
+            samples[k].push_back(elapsed / static_cast<double>(calls));
+        }
+    }
+    auto median = [](std::vector<double> values) {
+        std::sort(values.begin(), values.end());
+        return values[values.size() / 2];
+    };
+    Interleaved result;
+    for (std::size_t k = 0; k < works.size(); ++k) {
+        result.seconds.push_back(median(samples[k]));
+        std::vector<double> ratios;
+        for (int round = 0; round < rounds; ++round)
+            ratios.push_back(samples[k][round] / samples[0][round]);
+        result.ratio_to_first.push_back(median(ratios));
+    }
+    return result;
+}
+
 // A sheet of n × n particles of the scene's material: 1.15 m across whatever n is, with the
 // scene's areal density, and all three spring families.
 Scene sheet_of_size(const Scene& base, int n) {
     Scene scene = base;
     const double spacing = 1.15 / (n - 1);
-    scene.cloth.particle_mass = base.cloth.particle_mass * (spacing / base.cloth.spacing) * (spacing / base.cloth.spacing);
+    scene.cloth.particle_mass =
+        base.cloth.particle_mass * (spacing / base.cloth.spacing) * (spacing / base.cloth.spacing);
     scene.cloth.spacing = spacing;
     scene.cloth.rows = scene.cloth.cols = n;
     scene.shear.enabled = scene.bend.enabled = true;
@@ -89,100 +134,197 @@ int run_throughput_study(const ThroughputOptions& options) {
     std::printf("weft-bench throughput on %s\n", machine_description().c_str());
     const double bandwidth = triad_bandwidth();
     std::printf("memory bandwidth (triad): %.2f GB/s\n", bandwidth / 1e9);
-    csv.write_row({"", "", "", "triad_bandwidth_bytes_per_second", "", cell(bandwidth), "", "", ""});
+    csv.write_row(
+        {"", "", "", "triad_bandwidth_bytes_per_second", "", cell(bandwidth), "", "", ""});
 
     PlotSpec plot{"Time per step, all spring families (" + machine_description() + ")", "particles",
                   "seconds per step (median)"};
     std::vector<PlotSeries> series;
-    for (Integrator integrator : all_integrators) series.push_back({integrator_name(integrator), series_colour(static_cast<int>(series.size()))});
+    for (Integrator integrator : all_integrators)
+        series.push_back(
+            {integrator_name(integrator), series_colour(static_cast<int>(series.size()))});
     series.push_back({"plain baseline (symplectic euler)", raster::Rgba8{0, 0, 0, 255}, {}, true});
 
+    std::printf("threads: %d (WEFT_THREADS or the machine's), force kernel: %s\n",
+                default_thread_count(), simd_level_name(simd_level()));
+    int largest_real_time_at_1ms = 0, largest_real_time_sound = 0;
     for (int n : options.sizes) {
         if (stop_requested) break;
         const Scene scene = sheet_of_size(*base, n);
+        // Steps are timed on a sound state: at 90 % of the step limit that counts the dampers
+        // (stability_limit.h). At the scene's own dt a large sheet of this material diverges
+        // within a few steps, and a diverged state is not worth timing.
         Simulation simulation(scene);
+        const double sound_dt = std::min(
+            scene.solver.dt, 0.9 * estimated_step_limit(simulation.cloth(), scene.forces.air_drag,
+                                                        Integrator::symplectic_euler));
+        simulation.set_dt(sound_dt);
         const Cloth& cloth = simulation.cloth();
         const auto particles = static_cast<double>(cloth.particle_count());
         const auto springs = static_cast<double>(cloth.spring_count());
-        std::printf("\n%dx%d: %.0f particles, %.0f springs\n", n, n, particles, springs);
+        std::printf("\n%dx%d: %.0f particles, %.0f springs; steps timed at dt %.3g s\n", n, n,
+                    particles, springs, sound_dt);
 
         // The force pass alone, on one thread and on the machine's threads.
         std::vector<Vec3> forces(cloth.particle_count());
-        const double single_thread_seconds = seconds_per_call([&] {
-            accumulate_forces(cloth, simulation.force_field(), cloth.positions, cloth.velocities, forces);
-        });
         WorkerPool pool(default_thread_count());
-        const double force_seconds = seconds_per_call([&] {
-            accumulate_forces(cloth, simulation.force_field(), cloth.positions, cloth.velocities, forces, &pool);
-        });
+        const Interleaved force = interleaved_seconds(
+            {[&] {
+                 accumulate_forces(cloth, simulation.force_field(), cloth.positions,
+                                   cloth.velocities, forces);
+             },
+             [&] {
+                 accumulate_forces(cloth, simulation.force_field(), cloth.positions,
+                                   cloth.velocities, forces, &pool);
+             }});
+        const double single_thread_seconds = force.seconds[0], force_seconds = force.seconds[1];
         std::printf("  force pass, 1 thread %10.1f us\n", single_thread_seconds * 1e6);
         csv.write_row({std::to_string(n), cell(particles), cell(springs), "force_pass_1_thread", "",
                        cell(single_thread_seconds), cell(springs / single_thread_seconds), "", ""});
-        // Bytes it must move at least: each spring record, and x, v, f of every particle.
-        const double force_bytes = springs * sizeof(Spring) + particles * 3 * sizeof(Vec3);
-        std::printf("  force pass, %d threads %8.1f us  %.3g springs/s  %.1f %% of triad bandwidth\n",
-                    pool.thread_count(), force_seconds * 1e6, springs / force_seconds,
-                    100.0 * force_bytes / force_seconds / bandwidth);
-        csv.write_row({std::to_string(n), cell(particles), cell(springs), "force_pass", "", cell(force_seconds),
-                       cell(springs / force_seconds), "", cell(force_bytes / force_seconds / bandwidth) + " of triad"});
+        // Bytes it must move at least: x, v, f of every particle, and per spring its rest
+        // length (the structured pass; the general pass reads a 16-byte record).
+        const double force_bytes = springs * 8.0 + particles * 3 * sizeof(Vec3);
+        std::printf(
+            "  force pass, %d threads %8.1f us  %.3g springs/s  %.1f %% of triad bandwidth\n",
+            pool.thread_count(), force_seconds * 1e6, springs / force_seconds,
+            100.0 * force_bytes / force_seconds / bandwidth);
+        csv.write_row({std::to_string(n), cell(particles), cell(springs), "force_pass", "",
+                       cell(force_seconds), cell(springs / force_seconds), "",
+                       cell(force_bytes / force_seconds / bandwidth) + " of triad"});
 
         for (std::size_t k = 0; k < std::size(all_integrators); ++k) {
             const Integrator integrator = all_integrators[k];
             Simulation run = simulation;
             run.set_integrator(integrator);
-            const double step_seconds = seconds_per_call([&] { run.step(); });
-            std::printf("  %-17s %10.1f us/step  %.3g particle-steps/s\n", integrator_name(integrator),
-                        step_seconds * 1e6, particles / step_seconds);
-            csv.write_row({std::to_string(n), cell(particles), cell(springs), "step", integrator_name(integrator),
-                           cell(step_seconds), "", cell(particles / step_seconds), ""});
+            long long diverged_steps = 0;
+            const double step_seconds =
+                seconds_per_call([&] { diverged_steps += run.step().diverged(); });
+            std::printf("  %-17s %10.1f us/step  %.3g particle-steps/s%s\n",
+                        integrator_name(integrator), step_seconds * 1e6, particles / step_seconds,
+                        diverged_steps ? "  (diverged!)" : "");
+            csv.write_row({std::to_string(n), cell(particles), cell(springs), "step",
+                           integrator_name(integrator), cell(step_seconds), "",
+                           cell(particles / step_seconds), diverged_steps ? "diverged" : ""});
             series[k].points.push_back({particles, step_seconds});
         }
+
+        // Symplectic Euler against the plain baseline, both at the same dt from the same
+        // state, interleaved: weft on the machine's threads, weft on one, the baseline.
         PlainCloth plain(cloth, simulation.force_field());
-        const double plain_seconds = seconds_per_call([&] { plain.step_symplectic_euler(scene.solver.dt); });
-        Simulation weft_run = simulation;
+        Simulation weft_run = simulation, weft_single = simulation;
         weft_run.set_integrator(Integrator::symplectic_euler);
-        const double weft_seconds = seconds_per_call([&] { weft_run.step(); });
-        std::printf("  plain baseline    %10.1f us/step  weft symplectic euler is %.2fx faster\n",
-                    plain_seconds * 1e6, plain_seconds / weft_seconds);
+        weft_single.set_integrator(Integrator::symplectic_euler);
+        weft_single.set_thread_count(1);
+        const Interleaved versus =
+            interleaved_seconds({[&] { weft_run.step(); }, [&] { weft_single.step(); },
+                                 [&] { plain.step_symplectic_euler(sound_dt); }});
+        const double weft_seconds = versus.seconds[0], weft_single_seconds = versus.seconds[1];
+        const double plain_seconds = versus.seconds[2];
+        const double speed_up = versus.ratio_to_first[2];
+        const double speed_up_single = versus.ratio_to_first[2] / versus.ratio_to_first[1];
+        std::printf(
+            "  plain baseline    %10.1f us/step  weft symplectic euler: %.1f us on %d threads "
+            "(%.2fx faster), "
+            "%.1f us on 1 thread (%.2fx)\n",
+            plain_seconds * 1e6, weft_seconds * 1e6, weft_run.thread_count(), speed_up,
+            weft_single_seconds * 1e6, speed_up_single);
         csv.write_row({std::to_string(n), cell(particles), cell(springs), "step", "plain-baseline",
                        cell(plain_seconds), "", cell(particles / plain_seconds),
-                       "weft symplectic-euler speed-up " + cell(plain_seconds / weft_seconds)});
+                       "weft symplectic-euler speed-up " + cell(speed_up)});
+        csv.write_row({std::to_string(n), cell(particles), cell(springs),
+                       "step_threads_" + std::to_string(weft_run.thread_count()),
+                       "symplectic-euler", cell(weft_seconds), "", cell(particles / weft_seconds),
+                       "speed-up over plain baseline " + cell(speed_up)});
+        csv.write_row({std::to_string(n), cell(particles), cell(springs), "step_threads_1",
+                       "symplectic-euler", cell(weft_single_seconds), "",
+                       cell(particles / weft_single_seconds),
+                       "speed-up over plain baseline " + cell(speed_up_single)});
         series.back().points.push_back({particles, plain_seconds});
+
+        // Self-collision (issue 7): the same step with a [self_collision] pass of half a
+        // spacing's thickness, against the same sheet without it.
+        {
+            Scene colliding = scene;
+            colliding.self_collision_thickness = 0.5 * scene.cloth.spacing;
+            Simulation with(colliding);
+            with.set_dt(sound_dt);
+            Simulation without = simulation;
+            const Interleaved cost =
+                interleaved_seconds({[&] { without.step(); }, [&] { with.step(); }}, 5);
+            std::printf(
+                "  self-collision    %10.1f us/step more (%.1f us with, %.1f without: %.2fx)\n",
+                (cost.seconds[1] - cost.seconds[0]) * 1e6, cost.seconds[1] * 1e6,
+                cost.seconds[0] * 1e6, cost.ratio_to_first[1]);
+            csv.write_row(
+                {std::to_string(n), cell(particles), cell(springs), "step_self_collision",
+                 "symplectic-euler", cell(cost.seconds[1]), "", cell(particles / cost.seconds[1]),
+                 "without " + cell(cost.seconds[0]) + " s, ratio " + cell(cost.ratio_to_first[1])});
+        }
 
         // Drawing: the sheet after it has fallen a little, so it is not a flat square.
         Simulation shaped = simulation;
-        run_steps(shaped, 300);
+        run_steps(shaped, static_cast<long long>(std::ceil(0.3 / sound_dt)));
         double render_720p = 0.0;
         for (auto [width, height] : {std::pair{640, 480}, std::pair{1280, 720}}) {
             raster::Framebuffer framebuffer(width, height);
-            const double clear_seconds = seconds_per_call([&] { framebuffer.clear(raster::Rgba8{}); });
+            const double clear_seconds =
+                seconds_per_call([&] { framebuffer.clear(raster::Rgba8{}); });
             view::ClothView cloth_view(shaped.cloth());
             for (bool wireframe : {false, true}) {
                 view::FrameOptions frame;
                 frame.wireframe = wireframe;
-                const double seconds = seconds_per_call([&] {
-                    view::render_frame(framebuffer, view::scene_camera(scene), shaped.cloth(), cloth_view, frame, -1.0f);
-                });
-                if (width == 1280 && !wireframe) render_720p = seconds;
-                const std::string what = std::to_string(width) + "x" + std::to_string(height) + (wireframe ? " shaded+wireframe" : " shaded");
-                std::printf("  render %-27s %7.2f ms (clearing alone %.2f ms)\n", what.c_str(), seconds * 1e3, clear_seconds * 1e3);
-                csv.write_row({std::to_string(n), cell(particles), cell(springs), "render " + what, "", cell(seconds), "", "",
-                               "clear " + cell(clear_seconds)});
+                // On the machine's threads (bands) and on one, interleaved.
+                const Interleaved seconds = interleaved_seconds(
+                    {[&] {
+                         view::render_frame(framebuffer, view::scene_camera(scene), shaped.cloth(),
+                                            cloth_view, frame, -1.0f, {}, &pool);
+                     },
+                     [&] {
+                         view::render_frame(framebuffer, view::scene_camera(scene), shaped.cloth(),
+                                            cloth_view, frame, -1.0f);
+                     }},
+                    5);
+                if (width == 1280 && !wireframe) render_720p = seconds.seconds[0];
+                const std::string what = std::to_string(width) + "x" + std::to_string(height) +
+                                         (wireframe ? " shaded+wireframe" : " shaded");
+                std::printf(
+                    "  render %-27s %7.2f ms on %d threads, %.2f ms on 1 (clearing alone %.2f "
+                    "ms)\n",
+                    what.c_str(), seconds.seconds[0] * 1e3, pool.thread_count(),
+                    seconds.seconds[1] * 1e3, clear_seconds * 1e3);
+                csv.write_row(
+                    {std::to_string(n), cell(particles), cell(springs), "render " + what, "",
+                     cell(seconds.seconds[0]), "", "",
+                     "clear " + cell(clear_seconds) + "; 1 thread " + cell(seconds.seconds[1])});
             }
         }
-        // Real time at 60 frames per second: the steps of 1/60 s at 90 % of the stable step,
-        // plus one 1280x720 frame, within 1/60 s.
-        const double omega = highest_angular_frequency(cloth, 3000, 1e-6);
-        const double dt = 0.9 * stable_step_limit(Integrator::symplectic_euler, omega);
-        const double frame_seconds = std::ceil((1.0 / 60.0) / dt) * weft_seconds + render_720p;
-        std::printf("  real time at 60 fps (symplectic euler at dt %.3g s, 1280x720): %.1f ms per frame -> %s\n", dt,
-                    frame_seconds * 1e3, frame_seconds <= 1.0 / 60.0 ? "yes" : "no");
-        csv.write_row({std::to_string(n), cell(particles), cell(springs), "frame_at_60fps", "symplectic-euler",
-                       cell(frame_seconds), "", "", frame_seconds <= 1.0 / 60.0 ? "real time" : "slower than real time"});
+        // Real time at 60 frames per second: the steps of 1/60 s plus one 1280x720 frame
+        // within 1/60 s; at dt = 1 ms (17 steps a frame), and at the sound dt above.
+        for (double dt : {1e-3, sound_dt}) {
+            const double frame_seconds =
+                std::ceil((1.0 / 60.0) / dt - 1e-9) * weft_seconds + render_720p;
+            const bool real_time = frame_seconds <= 1.0 / 60.0;
+            std::printf(
+                "  real time at 60 fps (symplectic euler at dt %.3g s, 1280x720): %.1f ms per "
+                "frame -> %s\n",
+                dt, frame_seconds * 1e3, real_time ? "yes" : "no");
+            csv.write_row(
+                {std::to_string(n), cell(particles), cell(springs), "frame_at_60fps",
+                 "symplectic-euler", cell(frame_seconds), "", "",
+                 (real_time ? "real time at dt " : "slower than real time at dt ") + cell(dt)});
+            if (real_time && dt == 1e-3) largest_real_time_at_1ms = n;
+            if (real_time && dt != 1e-3) largest_real_time_sound = n;
+        }
     }
+    std::printf(
+        "\nlargest sheet in real time with a 1280x720 frame at 60 fps: %dx%d at dt 1 ms; %dx%d at "
+        "its sound dt\n",
+        largest_real_time_at_1ms, largest_real_time_at_1ms, largest_real_time_sound,
+        largest_real_time_sound);
     plot.series = series;
     const std::string path = options.out_dir + "/throughput.png";
-    if (!write_plot_png(plot, path, &error)) std::fprintf(stderr, "error: %s: %s\n", path.c_str(), error.c_str());
+    if (!write_plot_png(plot, path, &error))
+        std::fprintf(stderr, "error: %s: %s\n", path.c_str(), error.c_str());
     std::printf("\nwrote %s and %s\n", csv_path.c_str(), path.c_str());
     return stop_requested ? 130 : 0;
 }

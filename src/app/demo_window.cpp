@@ -39,6 +39,9 @@ struct Window {
     int texture_width = 0, texture_height = 0;
     raster::Framebuffer framebuffer{1, 1};        // the whole view, every run's column
     std::vector<raster::Framebuffer> run_frames;  // one per run when side by side
+    // Threads that draw the frame in bands (the simulation has its own for stepping; the
+    // two never run at once).
+    WorkerPool draw_pool{default_thread_count()};
     bool save_window_next_frame = false;
     int hand_column = 0;  // the column a drag or cut started in: it goes on in its coordinates
 };
@@ -254,7 +257,7 @@ bool present_frame(DemoState& state, Window& w) {
         w.texture_width = width;
         w.texture_height = height;
     }
-    render_runs(w.framebuffer, w.run_frames, state, columns_of(state, w));
+    render_runs(w.framebuffer, w.run_frames, state, columns_of(state, w), &w.draw_pool);
     SDL_UpdateTexture(w.texture, nullptr, w.framebuffer.colours().data(), width * 4);
     SDL_RenderCopy(w.renderer, w.texture, nullptr, nullptr);
     return true;

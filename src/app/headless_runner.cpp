@@ -76,10 +76,11 @@ bool write_outputs(const CommandLine& command_line, std::ofstream& dump,
         raster::Framebuffer framebuffer(command_line.screenshot_width,
                                         command_line.screenshot_height);
         view::ClothView cloth_view(simulation.cloth());
+        WorkerPool pool(default_thread_count());  // bands: the same image on any count
         view::render_frame(framebuffer, view::scene_camera(simulation.scene()), simulation.cloth(),
                            cloth_view, view::FrameOptions{},
                            view::ground_height_below(simulation.cloth(), simulation.colliders()),
-                           simulation.colliders());
+                           simulation.colliders(), &pool);
         std::string error;
         if (!raster::write_png(framebuffer, *command_line.screenshot_path, &error)) {
             print_error(*command_line.screenshot_path, error);

@@ -32,11 +32,12 @@ view::ClothView& run_view(DemoState& state, int run) {
 }  // namespace
 
 void render_runs(raster::Framebuffer& framebuffer, std::vector<raster::Framebuffer>& scratch,
-                 DemoState& state, const Columns& columns) {
+                 DemoState& state, const Columns& columns, WorkerPool* pool) {
     const raster::Camera camera = state.rig.camera();
     if (columns.count == 1) {
         view::render_frame(framebuffer, camera, state.simulation.cloth(), state.cloth_view,
-                           state.frame_options, state.ground_height, state.simulation.colliders());
+                           state.frame_options, state.ground_height, state.simulation.colliders(),
+                           pool);
         return;
     }
     framebuffer.clear(state.frame_options.background);
@@ -47,7 +48,7 @@ void render_runs(raster::Framebuffer& framebuffer, std::vector<raster::Framebuff
             column.resize(columns.width, columns.height);
         const Simulation& simulation = state.run(run);
         view::render_frame(column, camera, simulation.cloth(), run_view(state, run),
-                           state.frame_options, state.ground_height, simulation.colliders());
+                           state.frame_options, state.ground_height, simulation.colliders(), pool);
         const int left = run * columns.width;
         const int copied = std::min(columns.width, framebuffer.width() - left);
         for (int y = 0; y < std::min(columns.height, framebuffer.height()) && copied > 0; ++y)

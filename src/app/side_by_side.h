@@ -26,7 +26,8 @@ struct Columns {
 
 // Draws every run of `state` into its column of `framebuffer` (resized to the view), through
 // `scratch` framebuffers kept between frames. With one run it draws straight into it.
+// `pool` draws each frame in bands (none: one thread).
 void render_runs(raster::Framebuffer& framebuffer, std::vector<raster::Framebuffer>& scratch,
-                 DemoState& state, const Columns& columns);
+                 DemoState& state, const Columns& columns, WorkerPool* pool = nullptr);
 
 }  // namespace weft::app

@@ -38,6 +38,17 @@ void Framebuffer::clear(Rgba8 colour, float depth) {
     std::fill(depths_.begin(), depths_.end(), depth);
 }
 
+void Framebuffer::clear(Rgba8 colour, float depth, const PixelRect& rect) {
+    const PixelRect inside = rect.intersect(bounds());
+    if (inside.empty()) return;
+    for (int y = inside.y_begin; y < inside.y_end; ++y) {
+        const std::size_t first = index(inside.x_begin, y);
+        const auto width = static_cast<std::size_t>(inside.width());
+        std::fill_n(colours_.begin() + static_cast<std::ptrdiff_t>(first), width, colour);
+        std::fill_n(depths_.begin() + static_cast<std::ptrdiff_t>(first), width, depth);
+    }
+}
+
 std::size_t Framebuffer::index(int x, int y) const {
     assert(contains(x, y));
     return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +

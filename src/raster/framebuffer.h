@@ -36,6 +36,8 @@ class Framebuffer {
     bool contains(int x, int y) const { return x >= 0 && x < width_ && y >= 0 && y < height_; }
 
     void clear(Rgba8 colour, float depth = far_depth);
+    // Only the pixels inside `rect` (a band drawn by one thread).
+    void clear(Rgba8 colour, float depth, const PixelRect& rect);
 
     // Single pixels, for tests and tools; x and y must be inside (checked only by assert).
     Rgba8& colour(int x, int y) { return colours_[index(x, y)]; }

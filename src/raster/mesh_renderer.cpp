@@ -129,17 +129,20 @@ struct SurfaceShader {
 };
 
 // Transform: every vertex once, to clip space for the rasterizer and to world space for
-// lighting, with its outcode, so culling a triangle is three ANDs.
-void transform_vertices(const glm::mat4& view_projection, const MeshView& mesh, bool with_uv,
-                        int colour_slot, std::vector<ClipVertex>& vertices,
-                        std::vector<std::uint32_t>& outcodes) {
+// lighting, with its outcode (so culling a triangle is three ANDs) and its window row (so a
+// band rejects a triangle with two comparisons). Vertices [begin, end).
+void transform_vertices(const glm::mat4& view_projection, const MeshView& mesh, int colour_slot,
+                        PreparedMesh& prepared, std::size_t begin, std::size_t end) {
     const glm::mat4 clip_from_model = view_projection * mesh.model;
     const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(mesh.model)));
-    for (std::size_t i = 0; i < vertices.size(); ++i) {
+    const auto height = static_cast<float>(prepared.height);
+    for (std::size_t i = begin; i < end; ++i) {
         const glm::vec4 model_position(mesh.positions[i], 1.0f);
-        ClipVertex& vertex = vertices[i];
+        ClipVertex& vertex = prepared.vertices[i];
         vertex.position = clip_from_model * model_position;
-        outcodes[i] = clip_outcode(vertex.position);
+        prepared.outcodes[i] = clip_outcode(vertex.position);
+        // The same row the triangle setup computes (viewport.h), for vertices in front.
+        prepared.window_y[i] = (1.0f - vertex.position.y / vertex.position.w) * 0.5f * height;
         const glm::vec3 world(mesh.model * model_position);
         const glm::vec3 normal = normal_matrix * mesh.normals[i];
         float* v = vertex.varyings.data();
@@ -147,7 +150,7 @@ void transform_vertices(const glm::mat4& view_projection, const MeshView& mesh, 
             v[position_slot + k] = world[k];
             v[normal_slot + k] = normal[k];
         }
-        if (with_uv) {
+        if (prepared.with_uv) {
             v[uv_slot] = mesh.uvs[i].x;
             v[uv_slot + 1] = mesh.uvs[i].y;
         }
@@ -158,23 +161,35 @@ void transform_vertices(const glm::mat4& view_projection, const MeshView& mesh, 
 }
 
 template <bool HasUv, bool HasColour>
-void draw_mesh_with(Framebuffer& framebuffer, const Camera& camera, const MeshView& mesh,
-                    const SurfaceStyle& style, const Lighting& lighting, const PixelRect& scissor) {
+void draw_prepared_with(Framebuffer& framebuffer, const PreparedMesh& prepared,
+                        const SurfaceStyle& style, const Lighting& lighting,
+                        const PixelRect& scissor) {
     using Shader = SurfaceShader<HasUv, HasColour>;
-    const std::size_t count = mesh.positions.size();
-    std::vector<ClipVertex> vertices(count);
-    std::vector<std::uint32_t> outcodes(count);
-    transform_vertices(view_projection_matrix(camera, framebuffer), mesh, HasUv,
-                       HasColour ? Shader::colour_slot : -1, vertices, outcodes);
+    const std::size_t count = prepared.vertices.size();
+    const ClipVertex* vertices = prepared.vertices.data();
+    const std::uint32_t* outcodes = prepared.outcodes.data();
+    const float* window_y = prepared.window_y.data();
+    const PixelRect bounds = scissor.intersect(framebuffer.bounds());
+    if (bounds.empty()) return;
+    // A triangle entirely above or below the band draws nothing in it: a pixel margin on
+    // either side keeps this safe against the setup's snapping to 1/256 pixel.
+    const float band_top = static_cast<float>(bounds.y_begin) - 1.0f;
+    const float band_bottom = static_cast<float>(bounds.y_end) + 1.0f;
 
     // Cull, clip, rasterize, shade: triangle_rasterizer.h.
-    const Shader shader{&style, prepare(style, lighting), camera.position};
+    const Shader shader{&style, prepare(style, lighting), prepared.eye};
     RasterState state;
-    state.scissor = scissor;
-    for (const TriangleIndices& t : mesh.triangles) {
+    state.scissor = bounds;
+    for (const TriangleIndices& t : prepared.triangles) {
         if (t[0] >= count || t[1] >= count || t[2] >= count) continue;
         const TriangleOutcodes codes{outcodes[t[0]], outcodes[t[1]], outcodes[t[2]]};
         if (codes.culled()) continue;
+        if (!codes.needs_clipping()) {
+            const float y0 = window_y[t[0]], y1 = window_y[t[1]], y2 = window_y[t[2]];
+            if ((y0 < band_top && y1 < band_top && y2 < band_top) ||
+                (y0 > band_bottom && y1 > band_bottom && y2 > band_bottom))
+                continue;
+        }
         draw_triangle(framebuffer, state, vertices[t[0]], vertices[t[1]], vertices[t[2]], codes,
                       shader);
     }
@@ -204,24 +219,57 @@ glm::vec3 shade_surface(const SurfaceStyle& style, const Lighting& lighting,
     return shade(prepare(style, lighting), base_colour, normal, to_eye, front_facing);
 }
 
-bool draw_mesh(Framebuffer& framebuffer, const Camera& camera, const MeshView& mesh,
-               const SurfaceStyle& style, const Lighting& lighting, const PixelRect& scissor) {
+bool prepare_mesh(const Camera& camera, int width, int height, const MeshView& mesh,
+                  const SurfaceStyle& style, PreparedMesh& prepared, WorkerPool* pool) {
     const std::size_t count = mesh.positions.size();
     if (mesh.normals.size() != count) return false;
     if (!mesh.uvs.empty() && mesh.uvs.size() != count) return false;
     if (!mesh.colours.empty() && mesh.colours.size() != count) return false;
-
-    const bool uv = style.pattern != SurfacePattern::none && !mesh.uvs.empty();
-    const bool colour = !mesh.colours.empty();
-    if (uv && colour) {
-        draw_mesh_with<true, true>(framebuffer, camera, mesh, style, lighting, scissor);
-    } else if (uv) {
-        draw_mesh_with<true, false>(framebuffer, camera, mesh, style, lighting, scissor);
-    } else if (colour) {
-        draw_mesh_with<false, true>(framebuffer, camera, mesh, style, lighting, scissor);
+    prepared.triangles = mesh.triangles;
+    prepared.vertices.resize(count);
+    prepared.outcodes.resize(count);
+    prepared.window_y.resize(count);
+    prepared.width = width;
+    prepared.height = height;
+    prepared.eye = camera.position;
+    prepared.with_uv = style.pattern != SurfacePattern::none && !mesh.uvs.empty();
+    prepared.with_colour = !mesh.colours.empty();
+    const int colour_slot = !prepared.with_colour ? -1
+                            : prepared.with_uv    ? SurfaceShader<true, true>::colour_slot
+                                                  : SurfaceShader<false, true>::colour_slot;
+    const glm::mat4 view_projection = view_projection_matrix(camera, width, height);
+    // Each vertex is written by one slice: the same values for any split.
+    constexpr std::size_t min_vertices_for_threads = 4096;
+    if (pool && pool->thread_count() > 1 && count >= min_vertices_for_threads) {
+        pool->parallel_for(count, [&](std::size_t begin, std::size_t end) {
+            transform_vertices(view_projection, mesh, colour_slot, prepared, begin, end);
+        });
     } else {
-        draw_mesh_with<false, false>(framebuffer, camera, mesh, style, lighting, scissor);
+        transform_vertices(view_projection, mesh, colour_slot, prepared, 0, count);
     }
+    return true;
+}
+
+void draw_prepared_mesh(Framebuffer& framebuffer, const PreparedMesh& prepared,
+                        const SurfaceStyle& style, const Lighting& lighting,
+                        const PixelRect& scissor) {
+    if (prepared.with_uv && prepared.with_colour) {
+        draw_prepared_with<true, true>(framebuffer, prepared, style, lighting, scissor);
+    } else if (prepared.with_uv) {
+        draw_prepared_with<true, false>(framebuffer, prepared, style, lighting, scissor);
+    } else if (prepared.with_colour) {
+        draw_prepared_with<false, true>(framebuffer, prepared, style, lighting, scissor);
+    } else {
+        draw_prepared_with<false, false>(framebuffer, prepared, style, lighting, scissor);
+    }
+}
+
+bool draw_mesh(Framebuffer& framebuffer, const Camera& camera, const MeshView& mesh,
+               const SurfaceStyle& style, const Lighting& lighting, const PixelRect& scissor) {
+    PreparedMesh prepared;
+    if (!prepare_mesh(camera, framebuffer.width(), framebuffer.height(), mesh, style, prepared))
+        return false;
+    draw_prepared_mesh(framebuffer, prepared, style, lighting, scissor);
     return true;
 }
 

@@ -8,10 +8,16 @@
 // (u, v) coordinates makes folds and stretching readable.
 #pragma once
 
+#include <cstdint>
+#include <span>
+#include <vector>
+
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "parallel/worker_pool.h"
 #include "raster/camera.h"
+#include "raster/clipping.h"
 #include "raster/framebuffer.h"
 #include "raster/mesh.h"
 #include "raster/pixel_rect.h"
@@ -58,5 +64,32 @@ glm::vec3 shade_surface(const SurfaceStyle& style, const Lighting& lighting,
 bool draw_mesh(Framebuffer& framebuffer, const Camera& camera, const MeshView& mesh,
                const SurfaceStyle& style, const Lighting& lighting,
                const PixelRect& scissor = PixelRect::unbounded());
+
+// A mesh's vertices transformed once for one camera and framebuffer size — clip position,
+// world-space varyings, frustum outcodes and window row — so that one draw can be split into
+// bands of the framebuffer, drawn by several threads, without transforming twice. It refers
+// to the mesh's triangles, so the MeshView's arrays must outlive it. Kept between frames, it
+// allocates only when the mesh grows.
+struct PreparedMesh {
+    std::span<const TriangleIndices> triangles;
+    std::vector<ClipVertex> vertices;
+    std::vector<std::uint32_t> outcodes;
+    std::vector<float> window_y;  // pixels, the row of each vertex (meaningless if it is clipped)
+    int width = 0, height = 0;    // of the framebuffer it was prepared for
+    glm::vec3 eye{0.0f};          // camera position, for the shader's view vector
+    bool with_uv = false, with_colour = false;
+};
+
+// Transforms the mesh as draw_mesh does, splitting the vertices between the pool's threads
+// when there is one. False (and nothing prepared) when draw_mesh would refuse the mesh.
+bool prepare_mesh(const Camera& camera, int width, int height, const MeshView& mesh,
+                  const SurfaceStyle& style, PreparedMesh& prepared, WorkerPool* pool = nullptr);
+
+// Draws a prepared mesh inside `scissor`: exactly the pixels draw_mesh would draw there.
+// Triangles whose vertices all lie more than a pixel above or below the scissor are
+// rejected before setup, so a band costs little more than the triangles that cross it.
+void draw_prepared_mesh(Framebuffer& framebuffer, const PreparedMesh& prepared,
+                        const SurfaceStyle& style, const Lighting& lighting,
+                        const PixelRect& scissor = PixelRect::unbounded());
 
 }  // namespace weft::raster

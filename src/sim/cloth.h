@@ -12,6 +12,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "sim/grid_stencil.h"
+
 namespace weft {
 
 using Vec3 = glm::dvec3;
@@ -62,6 +64,9 @@ struct Cloth {
     // Topology.
     std::vector<SpringGroup> spring_groups;  // only the families present
     std::vector<Triangle> triangles;         // for drawing; two per grid cell
+    // The same springs as per-direction grid stencils, for the structured force pass; empty
+    // for a cloth that is not a plain grid (grid_stencil.h).
+    GridStencil grid_stencil;
 
     std::size_t particle_count() const { return positions.size(); }
     std::size_t spring_count() const;

@@ -117,6 +117,7 @@ Cloth build_grid_cloth(const Scene& scene) {
             cloth.triangles.push_back({top_right, bottom_left, bottom_right});
         }
     }
+    build_grid_stencil(cloth);
     return cloth;
 }
 

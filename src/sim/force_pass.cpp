@@ -3,6 +3,8 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
+#include "sim/grid_force_pass.h"
+
 namespace weft {
 
 namespace {
@@ -63,15 +65,19 @@ void accumulate_forces(const Cloth& cloth, const ForceField& field, std::span<co
     const double* mass = cloth.masses.data();
     const Vec3* v = velocities.data();
     Vec3* f = forces.data();
-    // External forces first: they also initialise the accumulator.
-    if (field.air_drag != 0.0) {
-        for (std::size_t p = 0; p < count; ++p)
-            f[p] = mass[p] * field.gravity - field.air_drag * (v[p] - field.wind);
-    } else {
-        for (std::size_t p = 0; p < count; ++p) f[p] = mass[p] * field.gravity;
+    // A plain grid takes the structured pass (grid_force_pass.h): gravity, drag and springs
+    // per direction over rows. Anything else takes the general one, spring by spring.
+    if (!accumulate_grid_forces(cloth, field, positions, velocities, forces, pool)) {
+        // External forces first: they also initialise the accumulator.
+        if (field.air_drag != 0.0) {
+            for (std::size_t p = 0; p < count; ++p)
+                f[p] = mass[p] * field.gravity - field.air_drag * (v[p] - field.wind);
+        } else {
+            for (std::size_t p = 0; p < count; ++p) f[p] = mass[p] * field.gravity;
+        }
+        for (const SpringGroup& group : cloth.spring_groups)
+            accumulate_spring_forces(group, positions, velocities, forces, pool);
     }
-    for (const SpringGroup& group : cloth.spring_groups)
-        accumulate_spring_forces(group, positions, velocities, forces, pool);
     if (!field.colliders.empty())
         accumulate_repulsion_forces(field.colliders, cloth, positions, velocities, forces);
     if (field.drag && field.drag->active())

@@ -7,7 +7,7 @@
 #include "sim/cloth.h"
 #include "sim/colliders.h"
 #include "sim/drag.h"
-#include "sim/worker_pool.h"
+#include "parallel/worker_pool.h"
 
 namespace weft {
 

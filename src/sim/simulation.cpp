@@ -47,6 +47,7 @@ void Simulation::reset() {
     drag_ = DragHandle{};
     build_colliders();
     self_collision_.reset();
+    divergence_guard_.forget();
     if (scene_.self_collision_thickness) self_collision_.emplace(*scene_.self_collision_thickness);
     time_ = 0.0;
     steps_taken_ = 0;
@@ -79,7 +80,8 @@ StepReport Simulation::step() {
     if (report.springs_torn || corrections) workspace_.history_valid = false;
     // With tearing on, a runaway spring breaks instead of stretching without bound, so only
     // non-finite values count as divergence.
-    report.divergence = find_divergence(cloth_, /*check_runaway_stretch=*/!scene_.tear_max_stretch);
+    report.divergence = divergence_guard_.check(
+        cloth_, /*check_runaway_stretch=*/!scene_.tear_max_stretch, pool_.get());
     return report;
 }
 
@@ -249,6 +251,7 @@ void Simulation::release_all_pins() {
 
 Cloth& Simulation::edit_cloth() {
     workspace_.history_valid = false;
+    divergence_guard_.forget();  // the caller may change more than positions
     return cloth_;
 }
 

@@ -9,6 +9,7 @@
 
 #include "sim/cloth.h"
 #include "sim/colliders.h"
+#include "sim/divergence.h"
 #include "sim/drag.h"
 #include "sim/force_pass.h"
 #include "sim/integrators/integrator.h"
@@ -128,6 +129,7 @@ class Simulation {
     std::vector<SpringGroup> switched_off_;  // families switched off, kept with their tears
     bool has_repulsion_ = false;             // any collider with the repulsion response
     std::optional<SelfCollision> self_collision_;
+    DivergenceGuard divergence_guard_;
     double time_ = 0.0;
     std::uint64_t steps_taken_ = 0;
 };

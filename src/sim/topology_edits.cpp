@@ -10,6 +10,7 @@ void after_springs_removed(Cloth& cloth, std::vector<std::uint64_t>& removed_edg
     // Removal kept the order, but the colour boundaries moved; colouring again is cheap next
     // to the event that removed the springs.
     for (SpringGroup& group : cloth.spring_groups) colour_springs(group, cloth.particle_count());
+    build_grid_stencil(cloth);  // the removed springs become masked, dead stencil entries
     std::sort(removed_edges.begin(), removed_edges.end());
     auto removed = [&](std::uint32_t a, std::uint32_t b) {
         return std::binary_search(removed_edges.begin(), removed_edges.end(), edge_key(a, b));
@@ -26,6 +27,7 @@ std::optional<SpringGroup> take_spring_family(Cloth& cloth, SpringFamily family)
     if (at == groups.end()) return std::nullopt;
     SpringGroup taken = std::move(*at);
     groups.erase(at);
+    build_grid_stencil(cloth);  // the structured pass must not read the family any more
     return taken;
 }
 
@@ -54,6 +56,7 @@ void add_spring_family(Cloth& cloth, SpringGroup fresh) {
     auto at = std::find_if(groups.begin(), groups.end(),
                            [&](const SpringGroup& g) { return g.family > fresh.family; });
     groups.insert(at, std::move(fresh));
+    build_grid_stencil(cloth);
 }
 
 void set_pinned(Cloth& cloth, std::size_t particle, bool pinned) {

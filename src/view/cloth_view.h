@@ -9,6 +9,7 @@
 
 #include "raster/colour.h"
 #include "raster/mesh.h"
+#include "raster/mesh_renderer.h"
 #include "sim/cloth.h"
 
 namespace weft::view {
@@ -35,6 +36,10 @@ class ClothView {
     std::span<const raster::LineIndices> spring_lines() const { return spring_lines_; }
     std::span<const raster::Rgba8> spring_colours(const Cloth& cloth);
 
+    // Scratch for the frame renderer: the mesh transformed for the current frame, kept so
+    // that drawing allocates nothing once the first frame is drawn.
+    raster::PreparedMesh& prepared_mesh() { return prepared_mesh_; }
+
     // Largest strain (|d|/L - 1) over all live springs at the last spring_colours() call.
     float largest_strain() const { return largest_strain_; }
 
@@ -52,6 +57,7 @@ class ClothView {
     std::size_t spring_count_ = 0;
     std::size_t triangle_count_ = 0;
     float largest_strain_ = 0.0f;
+    raster::PreparedMesh prepared_mesh_;
 };
 
 }  // namespace weft::view

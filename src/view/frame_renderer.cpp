@@ -41,44 +41,88 @@ float ground_height_below(const Cloth& cloth, std::span<const Collider> collider
 
 void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera,
                   const Cloth& cloth, ClothView& view, const FrameOptions& options,
-                  float ground_height, std::span<const Collider> colliders) {
-    framebuffer.clear(options.background);
+                  float ground_height, std::span<const Collider> colliders, WorkerPool* pool) {
+    // Everything shared by the bands is worked out first, once: the view of the cloth, the
+    // transformed mesh, the lighting and the per-line colours.
     view.update(cloth);
-    if (options.ground) {
-        raster::GroundGrid grid;
-        grid.height = ground_height;
-        raster::draw_ground_grid(framebuffer, camera, grid);
+    raster::Lighting lighting = options.lighting;
+    if (options.light_over_shoulder) {
+        // A key light above and behind the viewer's right shoulder: whichever side of the
+        // cloth faces the camera is lit, as a photographer would light fabric.
+        const raster::CameraBasis basis = raster::camera_basis(camera);
+        lighting.direction_to_light = -basis.forward + 0.9f * basis.up + 0.5f * basis.right;
     }
-    if (options.shaded) {
-        raster::Lighting lighting = options.lighting;
-        if (options.light_over_shoulder) {
-            // A key light above and behind the viewer's right shoulder: whichever side of the
-            // cloth faces the camera is lit, as a photographer would light fabric.
-            const raster::CameraBasis basis = raster::camera_basis(camera);
-            lighting.direction_to_light = -basis.forward + 0.9f * basis.up + 0.5f * basis.right;
+    raster::PreparedMesh& cloth_mesh = view.prepared_mesh();
+    const bool cloth_drawn =
+        options.shaded && raster::prepare_mesh(camera, framebuffer.width(), framebuffer.height(),
+                                               view.mesh(), options.surface, cloth_mesh, pool);
+    raster::SurfaceStyle collider_style;
+    collider_style.front_colour = collider_style.back_colour = {0.62f, 0.64f, 0.68f};
+    static const raster::TriangleMesh unit_sphere = raster::make_uv_sphere(48, 24);
+    std::span<const raster::Rgba8> spring_colours, particle_colours;
+    if (options.strain_springs) spring_colours = view.spring_colours(cloth);
+    if (options.particles) particle_colours = view.particle_colours(cloth);
+
+    auto draw_band = [&](const raster::PixelRect& band) {
+        framebuffer.clear(options.background, raster::Framebuffer::far_depth, band);
+        raster::LineStyle lines;
+        lines.scissor = band;
+        if (options.ground) {
+            raster::GroundGrid grid;
+            grid.height = ground_height;
+            raster::draw_ground_grid(framebuffer, camera, grid, lines);
         }
-        raster::draw_mesh(framebuffer, camera, view.mesh(), options.surface, lighting);
-        raster::SurfaceStyle collider_style;
-        collider_style.front_colour = collider_style.back_colour = {0.62f, 0.64f, 0.68f};
-        for (const Collider& collider : colliders) {
-            if (collider.type != ColliderType::sphere) continue;
-            static const raster::TriangleMesh unit_sphere = raster::make_uv_sphere(48, 24);
-            // Drawn 1.5 % small: cloth resting on the sphere is flat between its particles, and
-            // a full-size ball would show through the middle of every triangle on top of it.
-            raster::draw_sphere(framebuffer, camera, unit_sphere, glm::vec3(collider.center),
-                                0.985f * static_cast<float>(collider.radius), collider_style,
-                                lighting);
+        if (options.shaded) {
+            if (cloth_drawn)
+                raster::draw_prepared_mesh(framebuffer, cloth_mesh, options.surface, lighting,
+                                           band);
+            for (const Collider& collider : colliders) {
+                if (collider.type != ColliderType::sphere) continue;
+                // Drawn 1.5 % small: cloth resting on the sphere is flat between its
+                // particles, and a full-size ball would show through the middle of every
+                // triangle on top of it.
+                raster::draw_sphere(framebuffer, camera, unit_sphere, glm::vec3(collider.center),
+                                    0.985f * static_cast<float>(collider.radius), collider_style,
+                                    lighting, band);
+            }
         }
+    };
+
+    // Lines and points come last, over the whole frame on the calling thread: every band
+    // would transform all their vertices again, which costs more than drawing them once.
+    auto draw_lines = [&] {
+        raster::LineStyle lines;
+        if (options.wireframe)
+            raster::draw_indexed_lines(framebuffer, camera, view.positions(),
+                                       view.wireframe_edges(), raster::Rgba8{20, 20, 24, 255},
+                                       lines);
+        if (options.strain_springs)
+            raster::draw_indexed_lines(framebuffer, camera, view.positions(), view.spring_lines(),
+                                       spring_colours, lines);
+        if (options.particles)
+            raster::draw_points(framebuffer, camera, view.positions(), particle_colours, 4.0f,
+                                lines);
+    };
+
+    const int threads = pool ? pool->thread_count() : 1;
+    if (threads <= 1) {
+        draw_band(framebuffer.bounds());
+        draw_lines();
+        return;
     }
-    if (options.wireframe)
-        raster::draw_indexed_lines(framebuffer, camera, view.positions(), view.wireframe_edges(),
-                                   raster::Rgba8{20, 20, 24, 255});
-    if (options.strain_springs)
-        raster::draw_indexed_lines(framebuffer, camera, view.positions(), view.spring_lines(),
-                                   view.spring_colours(cloth));
-    if (options.particles)
-        raster::draw_points(framebuffer, camera, view.positions(), view.particle_colours(cloth),
-                            4.0f);
+    // Two bands per thread, interleaved, so a cloth filling only part of the screen still
+    // gives every thread some of it. Each band is drawn by one thread, whole.
+    const int band_count = 2 * threads;
+    const int height = framebuffer.height();
+    pool->parallel_for(static_cast<std::size_t>(threads), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t thread = begin; thread < end; ++thread) {
+            for (int band = static_cast<int>(thread); band < band_count; band += threads) {
+                draw_band({0, height * band / band_count, framebuffer.width(),
+                           height * (band + 1) / band_count});
+            }
+        }
+    });
+    draw_lines();
 }
 
 }  // namespace weft::view

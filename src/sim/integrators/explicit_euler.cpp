@@ -14,10 +14,12 @@ void step_explicit_euler(Cloth& cloth, const ForceField& field, double dt,
     Vec3* v = cloth.velocities.data();
     const Vec3* f = work.forces.data();
     const double* inverse_mass = cloth.inverse_masses.data();
-    for (std::size_t p = 0; p < count; ++p) {
-        x[p] += dt * v[p];
-        v[p] += dt * inverse_mass[p] * f[p];
-    }
+    for_particle_ranges(work, count, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t p = begin; p < end; ++p) {
+            x[p] += dt * v[p];
+            v[p] += dt * inverse_mass[p] * f[p];
+        }
+    });
 }
 
 }  // namespace weft

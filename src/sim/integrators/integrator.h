@@ -51,6 +51,19 @@ struct IntegratorWorkspace {
     void resize(std::size_t particle_count);
 };
 
+// Runs body(begin, end) over the particles [0, count), split between the pool's threads when
+// there are enough particles to pay for the hand-off. For the integrators' element-wise
+// loops (each particle reads and writes only its own entries) the result is the same bit
+// for bit whatever the split.
+inline constexpr std::size_t min_particles_for_parallel_loops = 4096;
+template <class Body>
+void for_particle_ranges(const IntegratorWorkspace& work, std::size_t count, Body&& body) {
+    if (work.pool && work.pool->thread_count() > 1 && count >= min_particles_for_parallel_loops)
+        work.pool->parallel_for(count, body);
+    else if (count > 0)
+        body(std::size_t{0}, count);
+}
+
 // Runs the force pass into work.forces and counts it.
 void evaluate_forces(const Cloth& cloth, const ForceField& field, std::span<const Vec3> positions,
                      std::span<const Vec3> velocities, IntegratorWorkspace& work);

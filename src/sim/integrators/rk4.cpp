@@ -28,28 +28,32 @@ void step_rk4(Cloth& cloth, const ForceField& field, double dt, IntegratorWorksp
             evaluate_forces(cloth, field, work.stage_positions, work.stage_velocities, work);
         const Vec3* f = work.forces.data();
         const Vec3* k_x = stage == 0 ? v : stage_v;  // dx/dt at this stage
-        for (std::size_t p = 0; p < count; ++p) {
-            const Vec3 k_v = inverse_mass[p] * f[p];  // dv/dt at this stage
-            const Vec3 slope_x = k_x[p];
-            if (stage == 0) {
-                x_rate_sum[p] = slope_x;
-                v_rate_sum[p] = k_v;
-            } else {
-                x_rate_sum[p] += weight[stage] * slope_x;
-                v_rate_sum[p] += weight[stage] * k_v;
+        for_particle_ranges(work, count, [&](std::size_t begin, std::size_t end) {
+            for (std::size_t p = begin; p < end; ++p) {
+                const Vec3 k_v = inverse_mass[p] * f[p];  // dv/dt at this stage
+                const Vec3 slope_x = k_x[p];
+                if (stage == 0) {
+                    x_rate_sum[p] = slope_x;
+                    v_rate_sum[p] = k_v;
+                } else {
+                    x_rate_sum[p] += weight[stage] * slope_x;
+                    v_rate_sum[p] += weight[stage] * k_v;
+                }
+                if (stage < 3) {
+                    const double offset = next_stage_offset[stage] * dt;
+                    stage_x[p] = x[p] + offset * slope_x;
+                    stage_v[p] = v[p] + offset * k_v;
+                }
             }
-            if (stage < 3) {
-                const double offset = next_stage_offset[stage] * dt;
-                stage_x[p] = x[p] + offset * slope_x;
-                stage_v[p] = v[p] + offset * k_v;
-            }
-        }
+        });
     }
     const double sixth_dt = dt / 6.0;
-    for (std::size_t p = 0; p < count; ++p) {
-        x[p] += sixth_dt * x_rate_sum[p];
-        v[p] += sixth_dt * v_rate_sum[p];
-    }
+    for_particle_ranges(work, count, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t p = begin; p < end; ++p) {
+            x[p] += sixth_dt * x_rate_sum[p];
+            v[p] += sixth_dt * v_rate_sum[p];
+        }
+    });
 }
 
 }  // namespace weft

@@ -30,17 +30,21 @@ void step_velocity_verlet(Cloth& cloth, const ForceField& field, double dt,
         for (std::size_t p = 0; p < count; ++p) a[p] = inverse_mass[p] * work.forces[p];
         work.history_valid = true;
     }
-    for (std::size_t p = 0; p < count; ++p) {
-        v[p] += half_dt * a[p];  // now v_{n+½}
-        x[p] += dt * v[p];
-        v_predicted[p] = v[p] + half_dt * a[p];
-    }
+    for_particle_ranges(work, count, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t p = begin; p < end; ++p) {
+            v[p] += half_dt * a[p];  // now v_{n+½}
+            x[p] += dt * v[p];
+            v_predicted[p] = v[p] + half_dt * a[p];
+        }
+    });
     evaluate_forces(cloth, field, cloth.positions, work.stage_velocities, work);
     const Vec3* f = work.forces.data();
-    for (std::size_t p = 0; p < count; ++p) {
-        a[p] = inverse_mass[p] * f[p];
-        v[p] += half_dt * a[p];
-    }
+    for_particle_ranges(work, count, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t p = begin; p < end; ++p) {
+            a[p] = inverse_mass[p] * f[p];
+            v[p] += half_dt * a[p];
+        }
+    });
 }
 
 }  // namespace weft

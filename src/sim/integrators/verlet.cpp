@@ -31,13 +31,15 @@ void step_verlet(Cloth& cloth, const ForceField& field, double dt, IntegratorWor
     }
     const double dt_squared = dt * dt;
     const double inverse_two_dt = 1.0 / (2.0 * dt);
-    for (std::size_t p = 0; p < count; ++p) {
-        const Vec3 acceleration = inverse_mass[p] * f[p];
-        const Vec3 x_next = 2.0 * x[p] - x_previous[p] + dt_squared * acceleration;
-        v[p] = (x_next - x_previous[p]) * inverse_two_dt + dt * acceleration;
-        x_previous[p] = x[p];
-        x[p] = x_next;
-    }
+    for_particle_ranges(work, count, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t p = begin; p < end; ++p) {
+            const Vec3 acceleration = inverse_mass[p] * f[p];
+            const Vec3 x_next = 2.0 * x[p] - x_previous[p] + dt_squared * acceleration;
+            v[p] = (x_next - x_previous[p]) * inverse_two_dt + dt * acceleration;
+            x_previous[p] = x[p];
+            x[p] = x_next;
+        }
+    });
 }
 
 }  // namespace weft

@@ -1,0 +1,68 @@
+// The row kernel of the structured force pass, as plain data in and plain data out, so it
+// can be compiled twice — for baseline x86-64 and for AVX2 — and picked at run time
+// (grid_force_pass.cpp). Nothing here knows Cloth or glm: the two builds must not share any
+// inline function, or the linker could hand the baseline build the AVX2 copy.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+namespace weft::grid_kernel {
+
+inline constexpr int max_directions = 6;
+// Columns of zeros on either side of every spring-force row, so the gather reads the spring
+// that ends at (r, c) from (r - dr, c - dc) without a bounds test (|dc| <= 2).
+inline constexpr int row_padding = 2;
+
+struct Direction {
+    int row_step;                // dr
+    int col_step;                // dc
+    double stiffness;            // N/m
+    double damping;              // N·s/m
+    const double* rest_lengths;  // m, per start particle; negative: no live spring there
+};
+
+struct Job {
+    int rows = 0, cols = 0;
+    const double* positions = nullptr;   // m, x y z per particle (Vec3 array)
+    const double* velocities = nullptr;  // m/s
+    double* forces = nullptr;            // N, written: x y z per particle
+    const double* masses = nullptr;      // kg
+    double gravity[3] = {};              // m/s²
+    double air_drag = 0.0;               // N·s/m
+    double wind[3] = {};                 // m/s
+    int direction_count = 0;
+    Direction directions[max_directions] = {};
+};
+
+// Doubles of scratch one thread needs for a cloth `cols` wide.
+inline std::size_t scratch_doubles(int cols) {
+    const auto padded = static_cast<std::size_t>(cols + 2 * row_padding);
+    // Three rows of x, v (6 components), three rows of spring forces (3 per direction), one
+    // row of force sums (3 components) and a row of zeros.
+    return 3 * 6 * padded + 3 * max_directions * 3 * padded + 3 * padded + padded;
+}
+
+// Writes the total force on every particle of rows [row_begin, row_end). Reads positions and
+// velocities of rows up to row_end + 1 and recomputes the springs of the two rows above the
+// band, so bands are independent and the result does not depend on how rows are split.
+void force_rows_baseline(const Job& job, int row_begin, int row_end, double* scratch);
+void force_rows_avx2(const Job& job, int row_begin, int row_end, double* scratch);
+
+// True if some live spring starting on rows [row_begin, row_end) may be longer than
+// sqrt(ratio_squared) rest lengths: |d|² > ratio_squared L² (the divergence guard's test).
+bool rows_maybe_overstretched_baseline(const Job& job, double ratio_squared, int row_begin,
+                                       int row_end);
+bool rows_maybe_overstretched_avx2(const Job& job, double ratio_squared, int row_begin,
+                                   int row_end);
+
+// The divergence guard's particle sweep over interleaved arrays (x y z per particle):
+// whether a position or velocity is not finite, and whether some particle has moved from
+// its reference by |x - x_ref|² >= limit_squared.
+void sweep_particles_baseline(const double* x, const double* reference, const double* v,
+                              std::size_t count, double limit_squared, bool& non_finite,
+                              bool& moved);
+void sweep_particles_avx2(const double* x, const double* reference, const double* v,
+                          std::size_t count, double limit_squared, bool& non_finite, bool& moved);
+
+}  // namespace weft::grid_kernel

@@ -1,0 +1,145 @@
+#include "sim/grid_force_pass.h"
+
+#include <atomic>
+#include <vector>
+
+#include "sim/force_pass.h"
+#include "sim/grid_force_kernel.h"
+
+namespace weft {
+namespace {
+
+static_assert(sizeof(Vec3) == 3 * sizeof(double), "the kernel reads Vec3 arrays as doubles");
+
+// Rows are split between threads only when there are enough particles to pay for the
+// hand-off (a few microseconds).
+constexpr std::size_t min_particles_for_threads = 4096;
+
+SimdLevel detect_simd_level() {
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+    if (__builtin_cpu_supports("avx2")) return SimdLevel::avx2;
+#endif
+    return SimdLevel::baseline;
+}
+
+std::atomic<SimdLevel> current_level{detect_simd_level()};
+
+// Scratch of each thread (the pool's threads are persistent): grown on first use, so no
+// step allocates once the first has run.
+double* thread_scratch(int cols) {
+    thread_local std::vector<double> scratch;
+    const std::size_t needed = grid_kernel::scratch_doubles(cols);
+    if (scratch.size() < needed) scratch.assign(needed, 0.0);
+    return scratch.data();
+}
+
+// The kernel's view of the cloth's stencil and materials; false if it has more directions
+// than the kernel takes (never, for a stencil built by build_grid_stencil).
+bool describe_stencil(const Cloth& cloth, std::span<const Vec3> positions, grid_kernel::Job& job) {
+    job.rows = cloth.rows;
+    job.cols = cloth.cols;
+    job.positions = &positions.data()->x;
+    job.masses = cloth.masses.data();
+    for (const GridStencilDirection& direction : cloth.grid_stencil.directions) {
+        if (job.direction_count == grid_kernel::max_directions) return false;
+        const SpringGroup& group = cloth.spring_groups[direction.group];
+        job.directions[job.direction_count++] = {direction.row_step, direction.col_step,
+                                                 group.stiffness, group.damping,
+                                                 direction.rest_lengths.data()};
+    }
+    return true;
+}
+
+bool use_threads(const Cloth& cloth, WorkerPool* pool) {
+    return pool && pool->thread_count() > 1 && cloth.particle_count() >= min_particles_for_threads;
+}
+
+}  // namespace
+
+SimdLevel supported_simd_level() {
+    static const SimdLevel supported = detect_simd_level();
+    return supported;
+}
+
+SimdLevel simd_level() {
+    return current_level.load(std::memory_order_relaxed);
+}
+
+void set_simd_level(SimdLevel level) {
+    if (level == SimdLevel::avx2 && supported_simd_level() != SimdLevel::avx2)
+        level = SimdLevel::baseline;
+    current_level.store(level, std::memory_order_relaxed);
+}
+
+const char* simd_level_name(SimdLevel level) {
+    return level == SimdLevel::avx2 ? "avx2" : "baseline x86-64";
+}
+
+bool accumulate_grid_forces(const Cloth& cloth, const ForceField& field,
+                            std::span<const Vec3> positions, std::span<const Vec3> velocities,
+                            std::span<Vec3> forces, WorkerPool* pool) {
+    grid_kernel::Job job;
+    if (!grid_stencil_usable(cloth) || !describe_stencil(cloth, positions, job)) return false;
+    job.velocities = &velocities.data()->x;
+    job.forces = &forces.data()->x;
+    for (int k = 0; k < 3; ++k) {
+        job.gravity[k] = field.gravity[k];
+        job.wind[k] = field.wind[k];
+    }
+    job.air_drag = field.air_drag;
+    const auto kernel = simd_level() == SimdLevel::avx2 ? grid_kernel::force_rows_avx2
+                                                        : grid_kernel::force_rows_baseline;
+    if (!use_threads(cloth, pool)) {
+        kernel(job, 0, job.rows, thread_scratch(job.cols));
+        return true;
+    }
+    pool->parallel_for(static_cast<std::size_t>(job.rows), [&](std::size_t begin, std::size_t end) {
+        kernel(job, static_cast<int>(begin), static_cast<int>(end), thread_scratch(job.cols));
+    });
+    return true;
+}
+
+std::optional<bool> grid_springs_maybe_longer_than(const Cloth& cloth, double ratio,
+                                                   WorkerPool* pool) {
+    grid_kernel::Job job;
+    if (!grid_stencil_usable(cloth) || !describe_stencil(cloth, cloth.positions, job))
+        return std::nullopt;
+    const double ratio_squared = ratio * ratio * (1.0 - 1e-9);
+    const auto kernel = simd_level() == SimdLevel::avx2
+                            ? grid_kernel::rows_maybe_overstretched_avx2
+                            : grid_kernel::rows_maybe_overstretched_baseline;
+    if (!use_threads(cloth, pool)) return kernel(job, ratio_squared, 0, job.rows);
+    std::atomic<bool> suspect{false};
+    pool->parallel_for(static_cast<std::size_t>(job.rows), [&](std::size_t begin, std::size_t end) {
+        if (kernel(job, ratio_squared, static_cast<int>(begin), static_cast<int>(end)))
+            suspect.store(true, std::memory_order_relaxed);
+    });
+    return suspect.load();
+}
+
+ParticleSweep sweep_particles(std::span<const Vec3> positions, std::span<const Vec3> reference,
+                              std::span<const Vec3> velocities, double limit_squared,
+                              WorkerPool* pool) {
+    const auto kernel = simd_level() == SimdLevel::avx2 ? grid_kernel::sweep_particles_avx2
+                                                        : grid_kernel::sweep_particles_baseline;
+    const std::size_t count = positions.size();
+    auto sweep = [&](std::size_t begin, std::size_t end, bool& non_finite, bool& moved) {
+        kernel(&positions[begin].x, &reference[begin].x, &velocities[begin].x, end - begin,
+               limit_squared, non_finite, moved);
+    };
+    ParticleSweep result;
+    if (!pool || pool->thread_count() <= 1 || count < min_particles_for_threads) {
+        if (count > 0) sweep(0, count, result.non_finite, result.moved);
+        return result;
+    }
+    std::atomic<bool> non_finite{false}, moved{false};
+    pool->parallel_for(count, [&](std::size_t begin, std::size_t end) {
+        bool slice_non_finite = false, slice_moved = false;
+        sweep(begin, end, slice_non_finite, slice_moved);
+        if (slice_non_finite) non_finite.store(true, std::memory_order_relaxed);
+        if (slice_moved) moved.store(true, std::memory_order_relaxed);
+    });
+    return {non_finite.load(), moved.load()};
+}
+
+}  // namespace weft

@@ -1,0 +1,51 @@
+// The structured force pass: the same forces as the general pass (force_pass.h) for a cloth
+// whose springs are a regular grid (grid_stencil.h), computed per direction over rows of
+// per-component arrays so the loops vectorise, and split between threads by rows.
+//
+// It agrees with the general pass to rounding (only the order of each particle's sum
+// differs: tested), and is bit-identical for any number of threads and for both builds of
+// its kernel (baseline x86-64 and AVX2: no fused multiply-add, IEEE operations only).
+#pragma once
+
+#include <optional>
+#include <span>
+
+#include "parallel/worker_pool.h"
+#include "sim/cloth.h"
+
+namespace weft {
+
+struct ForceField;
+
+// Which build of the row kernel runs. The default is the best the CPU supports.
+enum class SimdLevel { baseline, avx2 };
+SimdLevel supported_simd_level();
+SimdLevel simd_level();
+void set_simd_level(SimdLevel level);  // clamped to what the CPU supports; for tests, benches
+const char* simd_level_name(SimdLevel level);
+
+// Gravity, air drag and every spring force into `forces` (overwritten), or false — touching
+// nothing — when the cloth has no usable grid stencil. The drag handle and repulsion
+// contacts are the caller's (accumulate_forces adds them after).
+bool accumulate_grid_forces(const Cloth& cloth, const ForceField& field,
+                            std::span<const Vec3> positions, std::span<const Vec3> velocities,
+                            std::span<Vec3> forces, WorkerPool* pool);
+
+// The divergence guard's stretch test over the stencil: whether some live spring may be
+// longer than `ratio` rest lengths, by |d|² > ratio² (1 - 1e-9) L² — a superset of the exact
+// test |d| > ratio L, which the caller then runs. Nothing when there is no usable stencil.
+std::optional<bool> grid_springs_maybe_longer_than(const Cloth& cloth, double ratio,
+                                                   WorkerPool* pool);
+
+// The divergence guard's sweep over the particles (divergence.h), vectorised with the same
+// kernel builds: whether any position or velocity is not finite, and whether any particle
+// is at |x - x_ref|² >= limit_squared from its reference position.
+struct ParticleSweep {
+    bool non_finite = false;
+    bool moved = false;
+};
+ParticleSweep sweep_particles(std::span<const Vec3> positions, std::span<const Vec3> reference,
+                              std::span<const Vec3> velocities, double limit_squared,
+                              WorkerPool* pool);
+
+}  // namespace weft

@@ -1,0 +1,183 @@
+// The structured force pass (per-direction stencils over the grid) against the general one,
+// spring by spring: the same forces to rounding, dead springs masked, any thread count and
+// both kernel builds giving the same bits.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <glm/geometric.hpp>
+#include <random>
+
+#include "sim/cloth_builder.h"
+#include "sim/force_pass.h"
+#include "sim/grid_force_pass.h"
+#include "sim/topology_edits.h"
+
+namespace weft {
+namespace {
+
+Scene grid_scene(int rows, int cols) {
+    Scene scene;
+    scene.cloth.rows = rows;
+    scene.cloth.cols = cols;
+    scene.cloth.spacing = 0.03;
+    scene.structural = {true, 800.0, 0.5};
+    scene.shear = {true, 400.0, 0.3};
+    scene.bend = {true, 100.0, 0.1};
+    return scene;
+}
+
+// Random positions near the grid and random velocities: every spring loaded and moving.
+void scramble(Cloth& cloth, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> jitter(-0.008, 0.008), speed(-1.0, 1.0);
+    for (std::size_t p = 0; p < cloth.particle_count(); ++p) {
+        cloth.positions[p] += Vec3(jitter(rng), jitter(rng), jitter(rng));
+        cloth.velocities[p] = Vec3(speed(rng), speed(rng), speed(rng));
+    }
+}
+
+ForceField windy_field() {
+    ForceField field;
+    field.gravity = {0.5, -9.81, 0.25};
+    field.air_drag = 0.03;
+    field.wind = {1.0, 0.0, 2.0};
+    return field;
+}
+
+std::vector<Vec3> forces_of(const Cloth& cloth, const ForceField& field,
+                            WorkerPool* pool = nullptr) {
+    std::vector<Vec3> forces(cloth.particle_count());
+    accumulate_forces(cloth, field, cloth.positions, cloth.velocities, forces, pool);
+    return forces;
+}
+
+// The general pass's forces: the same cloth without its stencil.
+std::vector<Vec3> general_forces_of(Cloth cloth, const ForceField& field) {
+    cloth.grid_stencil = GridStencil{};
+    return forces_of(cloth, field);
+}
+
+// Each particle's force agrees with the general pass's to a few rounding errors of the
+// largest spring force that acts on it (the sums run in another order, and u = d (1/l)).
+void expect_same_to_rounding(const Cloth& cloth, const std::vector<Vec3>& grid,
+                             const std::vector<Vec3>& general) {
+    std::vector<double> largest_term(cloth.particle_count(), 0.0);
+    for (const SpringGroup& group : cloth.spring_groups) {
+        for (const Spring& s : group.springs) {
+            const Vec3 d = cloth.positions[s.j] - cloth.positions[s.i];
+            const double term =
+                group.stiffness * std::abs(glm::length(d) - s.rest_length) +
+                group.damping * glm::length(cloth.velocities[s.j] - cloth.velocities[s.i]);
+            largest_term[s.i] = std::max(largest_term[s.i], term);
+            largest_term[s.j] = std::max(largest_term[s.j], term);
+        }
+    }
+    for (std::size_t p = 0; p < cloth.particle_count(); ++p) {
+        const double scale = largest_term[p] + glm::length(general[p]) + 1e-300;
+        ASSERT_LE(glm::length(grid[p] - general[p]), 1e-14 * scale) << "particle " << p;
+    }
+}
+
+bool same_bits(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)) == 0;
+}
+
+TEST(GridForcePass, TheGridBuilderGivesAStencilAndTheOffsetLayoutDoesNot) {
+    Scene scene = grid_scene(6, 7);
+    EXPECT_TRUE(grid_stencil_usable(build_grid_cloth(scene)));
+    EXPECT_EQ(build_grid_cloth(scene).grid_stencil.directions.size(), 6u);
+    scene.cloth.layout = Layout::offset;
+    EXPECT_FALSE(grid_stencil_usable(build_cloth(scene)));  // the general pass handles it
+}
+
+TEST(GridForcePass, MatchesTheGeneralPassToRounding) {
+    for (auto [rows, cols] :
+         {std::pair{1, 1}, {1, 9}, {9, 1}, {2, 2}, {3, 5}, {17, 23}, {40, 33}}) {
+        Cloth cloth = build_grid_cloth(grid_scene(rows, cols));
+        scramble(cloth, static_cast<unsigned>(rows * 100 + cols));
+        ASSERT_TRUE(grid_stencil_usable(cloth));
+        SCOPED_TRACE(std::to_string(rows) + "x" + std::to_string(cols));
+        expect_same_to_rounding(cloth, forces_of(cloth, windy_field()),
+                                general_forces_of(cloth, windy_field()));
+    }
+}
+
+TEST(GridForcePass, MatchesTheGeneralPassWithSomeFamiliesAbsent) {
+    Scene scene = grid_scene(12, 10);
+    scene.shear.enabled = false;
+    Cloth no_shear = build_grid_cloth(scene);
+    scramble(no_shear, 3);
+    ASSERT_EQ(no_shear.grid_stencil.directions.size(), 4u);
+    expect_same_to_rounding(no_shear, forces_of(no_shear, ForceField{}),
+                            general_forces_of(no_shear, ForceField{}));
+    scene.bend.enabled = false;
+    Cloth structural_only = build_grid_cloth(scene);
+    scramble(structural_only, 4);
+    expect_same_to_rounding(structural_only, forces_of(structural_only, windy_field()),
+                            general_forces_of(structural_only, windy_field()));
+}
+
+TEST(GridForcePass, DeadSpringsAreMaskedLikeRemovedOnes) {
+    Cloth cloth = build_grid_cloth(grid_scene(20, 20));
+    scramble(cloth, 5);
+    // Cut a diagonal line of springs of every family, as tearing or the cut tool would.
+    const std::size_t removed =
+        remove_springs_if(cloth, [](const Spring& s) { return (s.i / 20 + s.i % 20) % 7 == 3; });
+    ASSERT_GT(removed, 100u);
+    ASSERT_TRUE(grid_stencil_usable(cloth));  // still the structured pass, with masks
+    expect_same_to_rounding(cloth, forces_of(cloth, windy_field()),
+                            general_forces_of(cloth, windy_field()));
+}
+
+TEST(GridForcePass, CoincidentEndsExertNoForceAndMakeNoNaN) {
+    Scene scene = grid_scene(4, 4);
+    Cloth cloth = build_grid_cloth(scene);
+    cloth.positions[5] = cloth.positions[6];  // a structural spring of zero length
+    const std::vector<Vec3> grid = forces_of(cloth, ForceField{});
+    for (const Vec3& f : grid) ASSERT_TRUE(std::isfinite(f.x + f.y + f.z));
+    expect_same_to_rounding(cloth, grid, general_forces_of(cloth, ForceField{}));
+}
+
+TEST(GridForcePass, StaleStencilFallsBackToTheGeneralPass) {
+    Cloth cloth = build_grid_cloth(grid_scene(5, 5));
+    cloth.spring_groups[0].springs.pop_back();  // edited behind topology_edits' back
+    EXPECT_FALSE(grid_stencil_usable(cloth));
+}
+
+TEST(GridForcePass, AnyThreadCountGivesTheSameBits) {
+    // Big enough for the rows to be split (4096 particles or more), with an odd row count.
+    Cloth cloth = build_grid_cloth(grid_scene(71, 64));
+    scramble(cloth, 9);
+    remove_springs_if(cloth, [](const Spring& s) { return s.i % 97 == 5; });
+    const std::vector<Vec3> one = forces_of(cloth, windy_field());
+    for (int threads : {2, 3, 4, 7}) {
+        WorkerPool pool(threads);
+        EXPECT_TRUE(same_bits(forces_of(cloth, windy_field(), &pool), one)) << threads;
+    }
+}
+
+TEST(GridForcePass, BaselineAndAvx2KernelsGiveTheSameBits) {
+    if (supported_simd_level() != SimdLevel::avx2) GTEST_SKIP() << "no AVX2 on this CPU";
+    Cloth cloth = build_grid_cloth(grid_scene(33, 29));
+    scramble(cloth, 13);
+    const SimdLevel before = simd_level();
+    set_simd_level(SimdLevel::baseline);
+    const std::vector<Vec3> baseline = forces_of(cloth, windy_field());
+    set_simd_level(SimdLevel::avx2);
+    const std::vector<Vec3> avx2 = forces_of(cloth, windy_field());
+    set_simd_level(before);
+    EXPECT_TRUE(same_bits(baseline, avx2));
+}
+
+TEST(GridForcePass, OverstretchTestFlagsOnlyLiveSpringsPastTheRatio) {
+    Cloth cloth = build_grid_cloth(grid_scene(6, 6));
+    EXPECT_FALSE(*grid_springs_maybe_longer_than(cloth, 5.0, nullptr));
+    cloth.positions[35] += Vec3(0.0, 0.0, 0.2);  // 6.7 spacings away from its neighbours
+    EXPECT_TRUE(*grid_springs_maybe_longer_than(cloth, 5.0, nullptr));
+    // With every spring of that corner gone, nothing is left to overstretch.
+    remove_springs_if(cloth, [](const Spring& s) { return s.j == 35 || s.i == 35; });
+    EXPECT_FALSE(*grid_springs_maybe_longer_than(cloth, 5.0, nullptr));
+}
+
+}  // namespace
+}  // namespace weft

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <cmath>
 #include <cinttypes>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -19,17 +19,9 @@
 namespace weft::app {
 namespace {
 
-std::string number(double value) {
-    char text[40];
-    std::snprintf(text, sizeof text, "%.17g", value);
-    std::string s = text;
-    if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
-    return s;
-}
-
 std::string vec3(const Vec3& v) {
     std::string text = "[";
-    for (int k = 0; k < 3; ++k) text.append(k ? ", " : "").append(number(v[k]));
+    for (int k = 0; k < 3; ++k) text.append(k ? ", " : "").append(toml_number(v[k]));
     return text.append("]");
 }
 
@@ -171,8 +163,8 @@ std::string session_to_toml(const SessionRecord& record) {
         switch (e.kind) {
             case ClothEvent::Kind::grab:
                 out << "particle = " << e.hit.particle << "\ntriangle = " << e.hit.triangle
-                    << "\ndistance = " << number(e.hit.distance)
-                    << "\npoint = " << vec3(e.hit.point) << "\nradius = " << number(e.radius)
+                    << "\ndistance = " << toml_number(e.hit.distance)
+                    << "\npoint = " << vec3(e.hit.point) << "\nradius = " << toml_number(e.radius)
                     << "\n";
                 break;
             case ClothEvent::Kind::pull:

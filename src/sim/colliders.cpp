@@ -71,34 +71,13 @@ void accumulate_repulsion_forces(std::span<const Collider> colliders, const Clot
     }
 }
 
-std::size_t resolve_impulse_contacts(std::span<const Collider> colliders, Cloth& cloth) {
-    std::size_t contacts = 0;
-    for (const Collider& collider : colliders) {
-        if (collider.response != ContactResponse::impulse) continue;
-        for (std::size_t p = 0; p < cloth.particle_count(); ++p) {
-            if (cloth.is_pinned(p)) continue;
-            Vec3 n;
-            const double distance = signed_distance(collider, cloth.positions[p], n);
-            if (distance >= 0.0) continue;
-            ++contacts;
-            cloth.positions[p] -= distance * n;  // onto the surface
-            Vec3& v = cloth.velocities[p];
-            const double normal_speed = glm::dot(v, n);
-            if (normal_speed >= 0.0) continue;  // already leaving
-            const Vec3 tangential = v - normal_speed * n;
-            const double normal_change = -(1.0 + collider.restitution) * normal_speed;
-            const double sliding_speed = glm::length(tangential);
-            const double tangential_scale =
-                sliding_speed > 0.0
-                    ? std::max(0.0, 1.0 - collider.friction * normal_change / sliding_speed)
-                    : 0.0;
-            v = -collider.restitution * normal_speed * n + tangential_scale * tangential;
-        }
-    }
-    return contacts;
-}
+namespace {
 
-std::size_t push_out_of_impulse_colliders(std::span<const Collider> colliders, Cloth& cloth) {
+// Moves every free particle found inside an impulse collider onto its surface, then hands it
+// to `respond(collider, velocity, outward_normal)`; returns how many there were.
+template <class Respond>
+std::size_t move_onto_impulse_colliders(std::span<const Collider> colliders, Cloth& cloth,
+                                        Respond respond) {
     std::size_t moved = 0;
     for (const Collider& collider : colliders) {
         if (collider.response != ContactResponse::impulse) continue;
@@ -108,12 +87,39 @@ std::size_t push_out_of_impulse_colliders(std::span<const Collider> colliders, C
             const double distance = signed_distance(collider, cloth.positions[p], n);
             if (distance >= 0.0) continue;
             ++moved;
-            cloth.positions[p] -= distance * n;
-            const double normal_speed = glm::dot(cloth.velocities[p], n);
-            if (normal_speed < 0.0) cloth.velocities[p] -= normal_speed * n;
+            cloth.positions[p] -= distance * n;  // onto the surface
+            respond(collider, cloth.velocities[p], n);
         }
     }
     return moved;
+}
+
+}  // namespace
+
+std::size_t resolve_impulse_contacts(std::span<const Collider> colliders, Cloth& cloth) {
+    return move_onto_impulse_colliders(
+        colliders, cloth, [](const Collider& collider, Vec3& v, const Vec3& n) {
+            const double normal_speed = glm::dot(v, n);
+            if (normal_speed >= 0.0) return;  // already leaving
+            const Vec3 tangential = v - normal_speed * n;
+            const double normal_change = -(1.0 + collider.restitution) * normal_speed;
+            const double sliding_speed = glm::length(tangential);
+            const double tangential_scale =
+                sliding_speed > 0.0
+                    ? std::max(0.0, 1.0 - collider.friction * normal_change / sliding_speed)
+                    : 0.0;
+            v = -collider.restitution * normal_speed * n + tangential_scale * tangential;
+        });
+}
+
+std::size_t push_out_of_impulse_colliders(std::span<const Collider> colliders, Cloth& cloth) {
+    // Only the velocity into the solid goes: restitution and friction were applied once, by
+    // resolve_impulse_contacts.
+    return move_onto_impulse_colliders(colliders, cloth,
+                                       [](const Collider&, Vec3& v, const Vec3& n) {
+                                           const double normal_speed = glm::dot(v, n);
+                                           if (normal_speed < 0.0) v -= normal_speed * n;
+                                       });
 }
 
 }  // namespace weft

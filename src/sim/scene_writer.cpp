@@ -6,19 +6,9 @@
 namespace weft {
 namespace {
 
-// Shortest form that round-trips: %.17g, with ".0" added where it would read as an integer
-// (TOML keeps integers and floats apart, and the loader wants floats for these keys).
-std::string number(double value) {
-    char text[40];
-    std::snprintf(text, sizeof text, "%.17g", value);
-    std::string s = text;
-    if (s.find_first_of(".eEn") == std::string::npos) s += ".0";  // "n": nan/inf never occur
-    return s;
-}
-
 std::string vec3(const Vec3d& v) {
     std::string text = "[";
-    for (int k = 0; k < 3; ++k) text.append(k ? ", " : "").append(number(v[k]));
+    for (int k = 0; k < 3; ++k) text.append(k ? ", " : "").append(toml_number(v[k]));
     return text.append("]");
 }
 
@@ -40,11 +30,19 @@ void spring_family(std::ostringstream& out, const char* name, const SpringFamily
                    bool always_on) {
     out << "\n[springs." << name << "]\n";
     if (!always_on) out << "enabled = " << (spec.enabled ? "true" : "false") << "\n";
-    out << "stiffness = " << number(spec.stiffness) << "  # N/m\n";
-    out << "damping = " << number(spec.damping) << "  # N·s/m\n";
+    out << "stiffness = " << toml_number(spec.stiffness) << "  # N/m\n";
+    out << "damping = " << toml_number(spec.damping) << "  # N·s/m\n";
 }
 
 }  // namespace
+
+std::string toml_number(double value) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.17g", value);
+    std::string s = text;
+    if (s.find_first_of(".eEn") == std::string::npos) s += ".0";  // "n": nan/inf never occur
+    return s;
+}
 
 std::string toml_string(const std::string& text) {
     std::string out(1, '"');
@@ -71,8 +69,8 @@ std::string scene_to_toml(const Scene& scene) {
     const ClothSpec& cloth = scene.cloth;
     out << "\n[cloth]\n";
     out << "rows = " << cloth.rows << "\ncols = " << cloth.cols << "\n";
-    out << "spacing = " << number(cloth.spacing) << "  # m\n";
-    out << "particle_mass = " << number(cloth.particle_mass) << "  # kg\n";
+    out << "spacing = " << toml_number(cloth.spacing) << "  # m\n";
+    out << "particle_mass = " << toml_number(cloth.particle_mass) << "  # kg\n";
     out << "layout = \"" << (cloth.layout == Layout::grid ? "grid" : "offset") << "\"\n";
     out << "orientation = \""
         << (cloth.orientation == Orientation::vertical ? "vertical" : "horizontal") << "\"\n";
@@ -92,22 +90,22 @@ std::string scene_to_toml(const Scene& scene) {
     spring_family(out, "bend", scene.bend, false);
 
     if (scene.tear_max_stretch)
-        out << "\n[tearing]\nmax_stretch = " << number(*scene.tear_max_stretch) << "\n";
+        out << "\n[tearing]\nmax_stretch = " << toml_number(*scene.tear_max_stretch) << "\n";
     if (scene.strain_limit_max_stretch)
-        out << "\n[strain_limit]\nmax_stretch = " << number(*scene.strain_limit_max_stretch)
+        out << "\n[strain_limit]\nmax_stretch = " << toml_number(*scene.strain_limit_max_stretch)
             << "\n";
     if (scene.self_collision_thickness)
-        out << "\n[self_collision]\nthickness = " << number(*scene.self_collision_thickness)
+        out << "\n[self_collision]\nthickness = " << toml_number(*scene.self_collision_thickness)
             << "  # m\n";
 
     out << "\n[forces]\n";
     out << "gravity = " << vec3(scene.forces.gravity) << "  # m/s²\n";
-    out << "air_drag = " << number(scene.forces.air_drag) << "  # N·s/m per particle\n";
+    out << "air_drag = " << toml_number(scene.forces.air_drag) << "  # N·s/m per particle\n";
     out << "wind = " << vec3(scene.forces.wind) << "  # m/s\n";
 
     out << "\n[solver]\n";
     out << "integrator = \"" << integrator_name(scene.solver.integrator) << "\"\n";
-    out << "dt = " << number(scene.solver.dt) << "  # s\n";
+    out << "dt = " << toml_number(scene.solver.dt) << "  # s\n";
 
     for (const ColliderSpec& collider : scene.colliders) {
         out << "\n[[colliders]]\n";
@@ -115,19 +113,19 @@ std::string scene_to_toml(const Scene& scene) {
         out << "type = \"" << (collider.type == ColliderType::sphere ? "sphere" : "plane")
             << "\"\n";
         out << "center = " << vec3(collider.center) << "  # m, sphere\n";
-        out << "radius = " << number(collider.radius) << "  # m, sphere\n";
+        out << "radius = " << toml_number(collider.radius) << "  # m, sphere\n";
         out << "point = " << vec3(collider.point) << "  # m, plane\n";
         out << "normal = " << vec3(collider.normal) << "  # plane\n";
         out << "response = \""
             << (collider.response == ContactResponse::impulse ? "impulse" : "repulsion") << "\"\n";
-        out << "restitution = " << number(collider.restitution) << "\n";
-        out << "friction = " << number(collider.friction) << "\n";
+        out << "restitution = " << toml_number(collider.restitution) << "\n";
+        out << "friction = " << toml_number(collider.friction) << "\n";
     }
 
     out << "\n[camera]\n";
     out << "position = " << vec3(scene.camera.position) << "  # m\n";
     out << "target = " << vec3(scene.camera.target) << "  # m\n";
-    out << "fov_degrees = " << number(scene.camera.fov_degrees) << "\n";
+    out << "fov_degrees = " << toml_number(scene.camera.fov_degrees) << "\n";
     return out.str();
 }
 

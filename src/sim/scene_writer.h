@@ -14,6 +14,10 @@ namespace weft {
 // that a later version might change. Doubles are written with 17 significant digits.
 std::string scene_to_toml(const Scene& scene);
 
+// `value` as a TOML float that reads back to the same double: %.17g, with ".0" added where it
+// would otherwise read as an integer.
+std::string toml_number(double value);
+
 // `text` as a TOML basic string: quoted, with quotes, backslashes and control characters
 // escaped (for other files weft writes in TOML, such as session recordings).
 std::string toml_string(const std::string& text);

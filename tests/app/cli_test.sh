@@ -9,36 +9,8 @@ trap 'rm -rf "$work"' EXIT
 failures=0
 passes=0
 
-# expect STATUS STDERR_REGEX -- ARGS...: runs weft, checks its status and stderr
-# (STDERR_REGEX "quiet" means stderr must be empty).
-expect() {
-  local status=$1 pattern=$2
-  shift 3
-  local actual
-  timeout 60 "$weft" "$@" >"$work/out" 2>"$work/err"
-  actual=$?
-  local stderr_ok=true
-  if [ "$pattern" = quiet ]; then
-    [ -s "$work/err" ] && stderr_ok=false
-  else
-    grep -Eq -- "$pattern" "$work/err" || stderr_ok=false
-  fi
-  if [ "$actual" -ne "$status" ] || [ "$stderr_ok" = false ]; then
-    echo "FAIL: weft $*"
-    echo "  expected status $status and stderr matching: $pattern"
-    echo "  got status $actual, stderr:"; sed 's/^/    /' "$work/err" | head -5
-    failures=$((failures + 1))
-  else
-    passes=$((passes + 1))
-  fi
-}
-
-# check DESCRIPTION COMMAND...: a plain assertion.
-check() {
-  local description=$1
-  shift
-  if "$@"; then passes=$((passes + 1)); else echo "FAIL: $description"; failures=$((failures + 1)); fi
-}
+program=$weft
+source "$(dirname "$0")/../cli_expect.sh"
 
 # The documented dump: header, then one row-major line per particle.
 expect 0 quiet -- --headless "$scenes/hanging_sheet.toml" --steps 1000 --dump "$work/state.csv"

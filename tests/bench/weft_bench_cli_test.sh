@@ -10,34 +10,8 @@ trap 'rm -rf "$work"' EXIT
 failures=0
 passes=0
 
-# expect STATUS STDERR_REGEX -- ARGS...: runs weft-bench, checks its status and stderr
-# (STDERR_REGEX "quiet": stderr must be empty).
-expect() {
-  local status=$1 pattern=$2
-  shift 3
-  timeout 120 "$bench" "$@" >"$work/out" 2>"$work/err"
-  local actual=$?
-  local stderr_ok=true
-  if [ "$pattern" = quiet ]; then
-    [ -s "$work/err" ] && stderr_ok=false
-  else
-    grep -Eq -- "$pattern" "$work/err" || stderr_ok=false
-  fi
-  if [ "$actual" -ne "$status" ] || [ "$stderr_ok" = false ]; then
-    echo "FAIL: weft-bench $*"
-    echo "  expected status $status and stderr matching: $pattern"
-    echo "  got status $actual, stderr:"; sed 's/^/    /' "$work/err" | head -5
-    failures=$((failures + 1))
-  else
-    passes=$((passes + 1))
-  fi
-}
-
-check() {
-  local description=$1
-  shift
-  if "$@"; then passes=$((passes + 1)); else echo "FAIL: $description"; failures=$((failures + 1)); fi
-}
+program=$bench
+source "$(dirname "$0")/../cli_expect.sh"
 
 # Strict numbers: the whole text, in range, or status 2 before anything runs.
 for study in precision invariants; do

@@ -1,25 +1,52 @@
 #include "raster/ground_grid.h"
 
 #include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
 
 namespace weft::raster {
 
-void draw_ground_grid(Framebuffer& framebuffer, const Camera& camera, const GroundGrid& grid,
-                      const LineStyle& style) {
+PlaneGrid PlaneGrid::facing(const glm::vec3& centre, const glm::vec3& normal) {
+    const glm::vec3 n = glm::normalize(normal);
+    // Across the slope: horizontal and in the plane. A horizontal plane has every horizontal
+    // direction in it; take x, as the ground grid does.
+    glm::vec3 across = glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), n);
+    across = glm::length(across) > 1e-6f ? glm::normalize(across) : glm::vec3(1.0f, 0.0f, 0.0f);
+    PlaneGrid grid;
+    grid.centre = centre;
+    grid.axis_u = across;
+    grid.axis_v = glm::normalize(glm::cross(n, across));
+    return grid;
+}
+
+void draw_plane_grid(Framebuffer& framebuffer, const Camera& camera, const PlaneGrid& grid,
+                     const LineStyle& style) {
     const int cells = std::clamp(grid.cell_count, 1, 1000);
     const float half_extent = 0.5f * static_cast<float>(cells) * grid.cell_size;
-    const float x0 = grid.centre.x - half_extent, z0 = grid.centre.y - half_extent;
-    const float x1 = grid.centre.x + half_extent, z1 = grid.centre.y + half_extent;
+    const glm::vec3 corner = grid.centre - half_extent * (grid.axis_u + grid.axis_v);
+    const glm::vec3 along_u = 2.0f * half_extent * grid.axis_u;
+    const glm::vec3 along_v = 2.0f * half_extent * grid.axis_v;
     LineSegment segments[2];
     for (int i = 0; i <= cells; ++i) {
         const float offset = static_cast<float>(i) * grid.cell_size;
         const Rgba8 colour = 2 * i == cells ? grid.centre_colour : grid.colour;
-        segments[0] = {
-            {x0 + offset, grid.height, z0}, {x0 + offset, grid.height, z1}, colour, colour};
-        segments[1] = {
-            {x0, grid.height, z0 + offset}, {x1, grid.height, z0 + offset}, colour, colour};
+        const glm::vec3 u_line = corner + offset * grid.axis_u;  // a line along v at this u
+        const glm::vec3 v_line = corner + offset * grid.axis_v;  // a line along u at this v
+        segments[0] = {u_line, u_line + along_v, colour, colour};
+        segments[1] = {v_line, v_line + along_u, colour, colour};
         draw_lines(framebuffer, camera, segments, style);
     }
+}
+
+void draw_ground_grid(Framebuffer& framebuffer, const Camera& camera, const GroundGrid& grid,
+                      const LineStyle& style) {
+    PlaneGrid plane;
+    plane.centre = {grid.centre.x, grid.height, grid.centre.y};
+    plane.cell_count = grid.cell_count;
+    plane.cell_size = grid.cell_size;
+    plane.colour = grid.colour;
+    plane.centre_colour = grid.centre_colour;
+    draw_plane_grid(framebuffer, camera, plane, style);
 }
 
 }  // namespace weft::raster

@@ -78,7 +78,7 @@ struct ColliderSpec {
     Vec3d center = {0.0, -1.0, 0.0};  // m, sphere
     double radius = 0.3;              // m, sphere (> 0)
     Vec3d point = {0.0, -1.0, 0.0};   // m, plane
-    Vec3d normal = {0.0, 1.0, 0.0};   // plane, unit length after loading
+    Vec3d normal = {0.0, 1.0, 0.0};   // plane, towards the free side; any nonzero length
     ContactResponse response = ContactResponse::impulse;
     double restitution = 0.0;  // 0 = perfectly inelastic, 1 = elastic
     double friction = 0.3;     // Coulomb coefficient (>= 0)

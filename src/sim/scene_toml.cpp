@@ -207,12 +207,14 @@ void read_colliders(TomlReader& reader, const toml::table& root, Scene& scene) {
         const double length = std::sqrt(collider.normal[0] * collider.normal[0] +
                                         collider.normal[1] * collider.normal[1] +
                                         collider.normal[2] * collider.normal[2]);
-        if (!reader.failed() && !(length > 0.0)) {
+        // Kept as written (make_colliders normalises it), so a scene saved and loaded again
+        // is the same scene bit for bit; a length whose square underflows or overflows
+        // could not be normalised.
+        if (!reader.failed() && !(length > 0.0 && std::isfinite(length))) {
             reader.fail(*table->get("normal"), "colliders.normal",
-                        "colliders.normal must not be zero");
+                        "colliders.normal must not be zero (nor so large its length overflows)");
             return;
         }
-        for (double& component : collider.normal) component /= length;
         scene.colliders.push_back(collider);
     }
 }

@@ -25,10 +25,18 @@ raster::Camera scene_camera(const Scene& scene) {
                                static_cast<float>(scene.camera.fov_degrees));
 }
 
+namespace {
+
+// A horizontal plane facing up: the ground grid shows it.
+bool is_ground_plane(const Collider& collider) {
+    return collider.type == ColliderType::plane && collider.normal.y > 0.999;
+}
+
+}  // namespace
+
 float ground_height_below(const Cloth& cloth, std::span<const Collider> colliders) {
     for (const Collider& collider : colliders)
-        if (collider.type == ColliderType::plane && collider.normal.y > 0.999)
-            return static_cast<float>(collider.point.y);
+        if (is_ground_plane(collider)) return static_cast<float>(collider.point.y);
     // Below the lowest point the cloth starts at, and below the lowest point it can reach
     // hanging from its pins (a cloth edge's length below the lowest pin).
     double lowest = 0.0;
@@ -71,6 +79,17 @@ void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera
             raster::GroundGrid grid;
             grid.height = ground_height;
             raster::draw_ground_grid(framebuffer, camera, grid, lines);
+        }
+        // Planes that are not the ground (a slope, a wall) as a grid of their own; the one
+        // the ground grid stands for is already drawn.
+        for (const Collider& collider : colliders) {
+            if (collider.type != ColliderType::plane || is_ground_plane(collider)) continue;
+            raster::PlaneGrid grid =
+                raster::PlaneGrid::facing(glm::vec3(collider.point), glm::vec3(collider.normal));
+            grid.cell_count = 8;  // 2 m: the plane is endless, its grid need not be
+            grid.colour = {150, 120, 90, 255};
+            grid.centre_colour = {190, 150, 110, 255};
+            raster::draw_plane_grid(framebuffer, camera, grid, lines);
         }
         if (options.shaded) {
             if (cloth_drawn)

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 
+#include "sim/colliders.h"
 #include "sim/scene_loader.h"
 
 namespace weft {
@@ -136,7 +137,8 @@ fov_degrees = 70
     EXPECT_EQ(s.solver.dt, 0.0025);
     ASSERT_EQ(s.colliders.size(), 2u);
     EXPECT_EQ(s.colliders[0].type, ColliderType::plane);
-    EXPECT_EQ(s.colliders[0].normal, (Vec3d{0.0, 1.0, 0.0}));  // normalised
+    EXPECT_EQ(s.colliders[0].normal, (Vec3d{0.0, 2.0, 0.0}));  // as written, so it saves back
+    EXPECT_EQ(make_colliders(s.colliders)[0].normal, Vec3(0.0, 1.0, 0.0));  // normalised
     EXPECT_EQ(s.colliders[0].response, ContactResponse::repulsion);
     EXPECT_EQ(s.colliders[0].restitution, 0.5);
     EXPECT_EQ(s.colliders[0].friction, 0.1);
@@ -182,6 +184,9 @@ TEST(SceneLoader, OutOfRangeValuesAreRefused) {
     EXPECT_TRUE(contains(error_of("[springs.shear]\nstiffness = -1\n").what, "must be >= 0"));
     EXPECT_TRUE(contains(error_of("[tearing]\nmax_stretch = 1\n").what, "must be > 1"));
     EXPECT_TRUE(contains(error_of("[[colliders]]\nrestitution = 1.5\n").what, "must be <= 1"));
+    EXPECT_TRUE(contains(error_of("[[colliders]]\nnormal = [0, 0, 0]\n").what, "must not be zero"));
+    // Its square overflows: it could not be normalised.
+    EXPECT_TRUE(contains(error_of("[[colliders]]\nnormal = [1e200, 0, 0]\n").what, "overflows"));
     EXPECT_TRUE(contains(error_of("[solver]\ndt = nan\n").what, "finite"));
     EXPECT_TRUE(contains(error_of("[forces]\nwind = [0, inf, 0]\n").what, "finite"));
     EXPECT_TRUE(

@@ -1,5 +1,5 @@
-// Table of contents: construction · stepping with recovery · the hand · parameter changes ·
-// scenes (reset, load, save).
+// Table of contents: construction · stepping with recovery · runs side by side · the hand ·
+// parameter changes · scenes (reset, load, save) · recording and replay.
 #include "app/demo_state.h"
 
 #include <chrono>

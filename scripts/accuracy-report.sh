@@ -19,3 +19,4 @@ mkdir -p "$out"
 "$bench" invariants assets/scenes/sheet_on_sphere.toml --duration 0.6 --repeats 2 --out "$out" |
   tee "$out/invariants_sheet_on_sphere.log"
 "$bench" stability --out "$out" | tee "$out/stability.log"
+"$bench" replay assets/sessions/fling.toml --out "$out" | tee "$out/replay.log"

@@ -6,6 +6,7 @@
 //   weft-bench stability [SCENE.toml] [--sweep grid|mass|stiffness]... [--set K=V]...
 //                        [--out DIR] [--duration SECONDS]
 //   weft-bench throughput [SCENE.toml] [--set K=V]... [--out DIR] [--sizes N,N,...]
+//   weft-bench replay SESSION.toml [--out DIR]
 #include <algorithm>
 #include <cstdio>
 #include <optional>
@@ -14,6 +15,7 @@
 
 #include "invariant_study.h"
 #include "precision_study.h"
+#include "replay_study.h"
 #include "stability_study.h"
 #include "strict_number.h"
 #include "study.h"
@@ -32,7 +34,8 @@ int usage(const char* problem) {
         "                        [--duration SECONDS]\n"
         "  weft-bench stability [SCENE.toml] [--sweep grid|mass|stiffness]... [--set K=V]...\n"
         "                       [--out DIR] [--duration SECONDS]\n"
-        "  weft-bench throughput [SCENE.toml] [--set K=V]... [--out DIR] [--sizes N,N,...]\n");
+        "  weft-bench throughput [SCENE.toml] [--set K=V]... [--out DIR] [--sizes N,N,...]\n"
+        "  weft-bench replay SESSION.toml [--out DIR]\n");
     return 2;
 }
 
@@ -40,7 +43,7 @@ int usage(const char* problem) {
 
 int main(int argc, char** argv) {
     const std::vector<std::string> args(argv + 1, argv + argc);
-    if (args.empty()) return usage("which study? precision, invariants, stability or throughput");
+    if (args.empty()) return usage("which study? precision, invariants, stability, throughput or replay");
     const std::string study = args[0];
     std::vector<std::string> scenes, overrides, sweeps;
     std::string out_dir = "bench-out";
@@ -107,6 +110,11 @@ int main(int argc, char** argv) {
         weft::bench::ThroughputOptions options{scene, overrides, out_dir};
         if (!sizes.empty()) options.sizes = sizes;
         return weft::bench::run_throughput_study(options);
+    }
+    if (study == "replay") {
+        if (scenes.size() != 1) return usage("replay takes one recorded session (weft --record)");
+        if (!overrides.empty()) return usage("replay replays the recorded parameters: no --set");
+        return weft::bench::run_replay_study({scenes[0], out_dir});
     }
     return usage(("unknown study '" + study + "'").c_str());
 }

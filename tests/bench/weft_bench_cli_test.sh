@@ -48,5 +48,15 @@ expect 0 quiet -- precision "$scenes/sheet_on_sphere.toml" --set cloth.rows=3 --
 check "contact scene measured by invariants" test -s "$work/prec/invariants_sheet_on_sphere.csv"
 check "no trajectory errors for it" test ! -e "$work/prec/precision.csv"
 
+# replay: a drag recorded in the window (assets/sessions/fling.toml), replayed by every
+# integrator; the recorded one must end in the recorded state bit for bit.
+expect 0 '' -- replay "$2/assets/sessions/fling.toml" --out "$work/replay"
+csv=$work/replay/replay.csv
+check "replay CSV header" grep -q '^integrator,recorded,matches_recording,recoveries,' "$csv"
+check "one row per integrator" test "$(tail -n +2 "$csv" | wc -l)" -eq 6
+check "the recorded integrator reproduces the recording" grep -q '^symplectic-euler,yes,yes,0,' "$csv"
+expect 2 'error: .*missing.toml: cannot read' -- replay "$work/missing.toml" --out "$work/replay2"
+expect 2 '^error: replay takes one recorded session' -- replay --out "$work/replay3"
+
 echo "$passes passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -1,0 +1,94 @@
+#include "replay_study.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <glm/geometric.hpp>
+
+#include "app/demo_state.h"
+#include "app/session_record.h"
+#include "csv_file.h"
+#include "sim/energy.h"
+#include "sim/scene_loader.h"
+#include "sim/scene_writer.h"
+#include "study.h"
+
+namespace weft::bench {
+namespace {
+
+// The scene text with its integrator replaced (dt and everything else as recorded).
+std::string with_integrator(const std::string& scene_toml, Integrator integrator) {
+    SceneLoadResult loaded = load_scene_text(scene_toml, "recorded scene");
+    loaded.scene->solver.integrator = integrator;  // the recording was checked when read
+    return scene_to_toml(*loaded.scene);
+}
+
+double largest_stretch(const Cloth& cloth) {
+    double largest = 0.0;
+    for (const SpringGroup& group : cloth.spring_groups)
+        for (const Spring& s : group.springs)
+            largest = std::max(
+                largest, glm::length(cloth.positions[s.j] - cloth.positions[s.i]) / s.rest_length);
+    return largest;
+}
+
+}  // namespace
+
+int run_replay_study(const ReplayOptions& options) {
+    std::string error;
+    std::optional<app::SessionRecord> record = app::read_session_file(options.session_path, error);
+    if (!record) {
+        std::fprintf(stderr, "error: %s\n", error.c_str());
+        return 2;
+    }
+    std::filesystem::create_directories(options.out_dir);
+    const std::string csv_path = options.out_dir + "/replay.csv";
+    CsvFile csv(csv_path, {"integrator", "recorded", "matches_recording", "recoveries", "final_dt_s",
+                           "final_energy_J", "largest_stretch", "cpu_seconds"});
+    if (!csv.is_open()) {
+        std::fprintf(stderr, "error: %s: cannot write\n", csv_path.c_str());
+        return 2;
+    }
+    const SceneLoadResult recorded_scene = load_scene_text(record->scene_toml, "recorded scene");
+    const Integrator recorded = recorded_scene.scene->solver.integrator;
+    std::printf("weft-bench replay on %s\n%s: %llu steps, %zu events, recorded with %s\n",
+                machine_description().c_str(), options.session_path.c_str(),
+                static_cast<unsigned long long>(record->steps), record->events.size(),
+                integrator_name(recorded));
+    int status = 0;
+    for (Integrator integrator : all_integrators) {
+        if (stop_requested) break;
+        app::SessionRecord run = *record;
+        run.scene_toml = with_integrator(record->scene_toml, integrator);
+        for (app::TimedEvent& timed : run.events)
+            if (timed.event.kind == app::ClothEvent::Kind::parameters)
+                timed.event.scene_toml = with_integrator(timed.event.scene_toml, integrator);
+        std::printf("  %-17s ", integrator_name(integrator));
+        std::fflush(stdout);
+        const SceneLoadResult scene = load_scene_text(run.scene_toml, "replayed scene");
+        app::DemoState state(options.session_path, {}, *scene.scene);
+        state.start_replay(run);
+        const double seconds = seconds_of([&] {
+            while (!state.replay_finished() && !stop_requested) state.step(4096);
+        });
+        const bool matches = state.replay_matches();
+        const double energy =
+            measure_energy(state.simulation.cloth(), state.simulation.force_field()).total();
+        const double stretch = largest_stretch(state.simulation.cloth());
+        std::printf("%s%d recoveries, ends at dt %.3g ms, energy %.4g J, largest stretch %.3f, "
+                    "%.3g s CPU\n",
+                    integrator == recorded ? (matches ? "(recorded: reproduced bit for bit) "
+                                                      : "(recorded: DIFFERS from the recording) ")
+                                           : "",
+                    state.recovery.recoveries, state.simulation.dt() * 1e3, energy, stretch,
+                    seconds);
+        csv.write_row({integrator_name(integrator), integrator == recorded ? "yes" : "no",
+                       integrator == recorded ? (matches ? "yes" : "no") : "",
+                       std::to_string(state.recovery.recoveries), cell(state.simulation.dt()),
+                       cell(energy), cell(stretch), cell(seconds)});
+        if (integrator == recorded && !matches) status = 4;
+    }
+    std::printf("wrote %s\n", csv_path.c_str());
+    return stop_requested ? 130 : status;
+}
+
+}  // namespace weft::bench

@@ -9,6 +9,7 @@
 
 #include "csv_file.h"
 #include "plot.h"
+#include "sim/divergence.h"
 #include "sim/energy.h"
 #include "study.h"
 
@@ -21,14 +22,7 @@ constexpr double finest_factor = 0.0625;  // the reference: RK4 at the finest st
 
 // Largest |d|/L − 1 over the live springs (NaN when every spring has torn).
 double largest_strain(const Cloth& cloth) {
-    double largest = -std::numeric_limits<double>::infinity();
-    for (const SpringGroup& group : cloth.spring_groups)
-        for (const Spring& spring : group.springs)
-            largest = std::max(largest,
-                               glm::length(cloth.positions[spring.j] - cloth.positions[spring.i]) /
-                                       spring.rest_length -
-                                   1.0);
-    return std::isfinite(largest) ? largest : NAN;
+    return largest_stretch_ratio(cloth) - 1.0;
 }
 
 // Height of the centre of mass (m): every particle has the same mass, so the mean height.

@@ -2,11 +2,11 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <glm/geometric.hpp>
 
 #include "app/demo_state.h"
 #include "app/session_record.h"
 #include "csv_file.h"
+#include "sim/divergence.h"
 #include "sim/energy.h"
 #include "sim/scene_loader.h"
 #include "sim/scene_writer.h"
@@ -22,15 +22,6 @@ std::string with_integrator(const std::string& scene_toml, Integrator integrator
     return scene_to_toml(*loaded.scene);
 }
 
-double largest_stretch(const Cloth& cloth) {
-    double largest = 0.0;
-    for (const SpringGroup& group : cloth.spring_groups)
-        for (const Spring& s : group.springs)
-            largest = std::max(
-                largest, glm::length(cloth.positions[s.j] - cloth.positions[s.i]) / s.rest_length);
-    return largest;
-}
-
 }  // namespace
 
 int run_replay_study(const ReplayOptions& options) {
@@ -42,8 +33,8 @@ int run_replay_study(const ReplayOptions& options) {
     }
     std::filesystem::create_directories(options.out_dir);
     const std::string csv_path = options.out_dir + "/replay.csv";
-    CsvFile csv(csv_path, {"integrator", "recorded", "matches_recording", "recoveries", "final_dt_s",
-                           "final_energy_J", "largest_stretch", "cpu_seconds"});
+    CsvFile csv(csv_path, {"integrator", "recorded", "matches_recording", "recoveries",
+                           "final_dt_s", "final_energy_J", "largest_stretch", "cpu_seconds"});
     if (!csv.is_open()) {
         std::fprintf(stderr, "error: %s: cannot write\n", csv_path.c_str());
         return 2;
@@ -73,14 +64,14 @@ int run_replay_study(const ReplayOptions& options) {
         const bool matches = state.replay_matches();
         const double energy =
             measure_energy(state.simulation.cloth(), state.simulation.force_field()).total();
-        const double stretch = largest_stretch(state.simulation.cloth());
-        std::printf("%s%d recoveries, ends at dt %.3g ms, energy %.4g J, largest stretch %.3f, "
-                    "%.3g s CPU\n",
-                    integrator == recorded ? (matches ? "(recorded: reproduced bit for bit) "
-                                                      : "(recorded: DIFFERS from the recording) ")
-                                           : "",
-                    state.recovery.recoveries, state.simulation.dt() * 1e3, energy, stretch,
-                    seconds);
+        const double stretch = largest_stretch_ratio(state.simulation.cloth());
+        std::printf(
+            "%s%d recoveries, ends at dt %.3g ms, energy %.4g J, largest stretch %.3f, "
+            "%.3g s CPU\n",
+            integrator == recorded ? (matches ? "(recorded: reproduced bit for bit) "
+                                              : "(recorded: DIFFERS from the recording) ")
+                                   : "",
+            state.recovery.recoveries, state.simulation.dt() * 1e3, energy, stretch, seconds);
         csv.write_row({integrator_name(integrator), integrator == recorded ? "yes" : "no",
                        integrator == recorded ? (matches ? "yes" : "no") : "",
                        std::to_string(state.recovery.recoveries), cell(state.simulation.dt()),

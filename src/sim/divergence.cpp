@@ -11,6 +11,15 @@
 #include "sim/grid_force_pass.h"
 
 namespace weft {
+
+double largest_stretch_ratio(const Cloth& cloth) {
+    double largest = -std::numeric_limits<double>::infinity();
+    for (const SpringGroup& group : cloth.spring_groups)
+        for (const Spring& s : group.springs)
+            largest = std::max(
+                largest, glm::length(cloth.positions[s.j] - cloth.positions[s.i]) / s.rest_length);
+    return std::isfinite(largest) ? largest : std::numeric_limits<double>::quiet_NaN();
+}
 namespace {
 
 bool is_finite(const Vec3& v) {

@@ -6,14 +6,18 @@
 #include <string>
 #include <vector>
 
-#include "sim/cloth.h"
 #include "parallel/worker_pool.h"
+#include "sim/cloth.h"
 
 namespace weft {
 
 // A spring longer than this many rest lengths, with tearing off, means the integration has
 // run away: no fabric stretches 5× and a stable step never gets there.
 inline constexpr double runaway_stretch_ratio = 5.0;
+
+// The largest |x_j - x_i| / L over the live springs, or NaN when none is left: what the
+// stretch limits are judged on, for studies and tests to report.
+double largest_stretch_ratio(const Cloth& cloth);
 
 // Returns why the state is diverged, or nothing if it is sound: a non-finite position or
 // velocity (naming the particle), or — when `check_runaway_stretch` — a spring stretched

@@ -32,8 +32,8 @@ struct Spring {
 // group at all, so it costs nothing in the force pass.
 struct SpringGroup {
     SpringFamily family = SpringFamily::structural;
-    double stiffness = 0.0;  // N/m
-    double damping = 0.0;    // N·s/m, acts on the relative velocity along the spring
+    double stiffness = 0.0;       // N/m
+    double damping = 0.0;         // N·s/m, acts on the relative velocity along the spring
     std::vector<Spring> springs;  // sorted by colour (spring_coloring.h)
     // springs[colour_starts[k] .. colour_starts[k+1]) is colour k: no two of its springs share
     // a particle. The last entry is where springs that fit no colour start; those are applied

@@ -144,23 +144,33 @@ void DivergenceGuard::renew_reference(const Cloth& cloth, WorkerPool* pool) {
     reference_valid_ = true;
 }
 
+std::optional<SweepRequest> DivergenceGuard::sweep_request(const Cloth& cloth,
+                                                           bool check_runaway_stretch) const {
+    if (!reference_valid_ || reference_positions_.size() != cloth.particle_count())
+        return std::nullopt;
+    // Every spring is at most 2 m longer than at the reference, m the largest distance a
+    // particle has moved: the scan can be skipped while 2 m < H. A margin of 1e-9, relative
+    // to the lengths involved, covers rounding in l_ref, L, m and the exact scan's own |d|
+    // (each off by parts in 1e16).
+    // (A cloth without springs has an infinite headroom: only finiteness to watch.)
+    const double reach = std::isinf(headroom_) && headroom_ > 0.0
+                             ? headroom_
+                             : 0.5 * (headroom_ - 1e-9 * (std::abs(headroom_) + length_scale_));
+    const double limit_squared = !check_runaway_stretch ? std::numeric_limits<double>::infinity()
+                                 : reach > 0.0          ? reach * reach * (1.0 - 1e-9)
+                                                        : 0.0;
+    return SweepRequest{reference_positions_.data(), limit_squared};
+}
+
 std::optional<std::string> DivergenceGuard::check(const Cloth& cloth, bool check_runaway_stretch,
-                                                  WorkerPool* pool) {
-    if (reference_valid_ && reference_positions_.size() == cloth.particle_count()) {
-        // Every spring is at most 2 m longer than at the reference, m the largest distance
-        // a particle has moved: the scan can be skipped while 2 m < H. A margin of 1e-9,
-        // relative to the lengths involved, covers rounding in l_ref, L, m and the exact
-        // scan's own |d| (each off by parts in 1e16).
-        // (A cloth without springs has an infinite headroom: only finiteness to watch.)
-        const double reach = std::isinf(headroom_) && headroom_ > 0.0
-                                 ? headroom_
-                                 : 0.5 * (headroom_ - 1e-9 * (std::abs(headroom_) + length_scale_));
-        const double limit_squared = !check_runaway_stretch
-                                         ? std::numeric_limits<double>::infinity()
-                                     : reach > 0.0 ? reach * reach * (1.0 - 1e-9)
-                                                   : 0.0;
-        const ParticleSweep sweep = sweep_particles(cloth.positions, reference_positions_,
-                                                    cloth.velocities, limit_squared, pool);
+                                                  WorkerPool* pool,
+                                                  std::optional<ParticleSweep> swept) {
+    if (const std::optional<SweepRequest> request = sweep_request(cloth, check_runaway_stretch)) {
+        const ParticleSweep sweep =
+            swept ? *swept
+                  : sweep_particles(cloth.positions,
+                                    {request->reference_positions, cloth.particle_count()},
+                                    cloth.velocities, request->limit_squared, pool);
         if (!sweep.non_finite && !sweep.moved) return std::nullopt;
     }
     std::optional<std::string> verdict = find_divergence(cloth, check_runaway_stretch, pool);

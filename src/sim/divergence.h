@@ -8,6 +8,7 @@
 
 #include "parallel/worker_pool.h"
 #include "sim/cloth.h"
+#include "sim/grid_force_pass.h"
 
 namespace weft {
 
@@ -43,8 +44,13 @@ std::optional<std::string> find_divergence(const Cloth& cloth, bool check_runawa
 // Removing springs (tearing, cuts) only raises H, so the bound survives it.
 class DivergenceGuard {
   public:
+    // `swept`: the sweep of this very state for sweep_request(), if a fused step has done
+    // it already (grid_force_pass.h).
     std::optional<std::string> check(const Cloth& cloth, bool check_runaway_stretch,
-                                     WorkerPool* pool = nullptr);
+                                     WorkerPool* pool = nullptr,
+                                     std::optional<ParticleSweep> swept = std::nullopt);
+    // The sweep the next check will make of `cloth`, or nothing if it will scan in full.
+    std::optional<SweepRequest> sweep_request(const Cloth& cloth, bool check_runaway_stretch) const;
     // The cloth was rebuilt (reset): the kept positions no longer belong to it.
     void forget() { reference_valid_ = false; }
 

@@ -4,20 +4,20 @@
 
 #include <span>
 
+#include "parallel/worker_pool.h"
 #include "sim/cloth.h"
 #include "sim/colliders.h"
 #include "sim/drag.h"
-#include "parallel/worker_pool.h"
 
 namespace weft {
 
 // The external force field, constant over a step.
 struct ForceField {
-    Vec3 gravity{0.0, -9.81, 0.0};  // m/s²
-    double air_drag = 0.0;          // N·s/m per particle: f = -air_drag (v - wind)
-    Vec3 wind{0.0};                 // m/s
-    const DragHandle* drag = nullptr;      // the user's pull, while there is one
-    std::span<const Collider> colliders;   // those with repulsion contacts, if any
+    Vec3 gravity{0.0, -9.81, 0.0};        // m/s²
+    double air_drag = 0.0;                // N·s/m per particle: f = -air_drag (v - wind)
+    Vec3 wind{0.0};                       // m/s
+    const DragHandle* drag = nullptr;     // the user's pull, while there is one
+    std::span<const Collider> colliders;  // those with repulsion contacts, if any
 };
 
 // Writes into `forces` the total force on each particle (N) for the state (positions,

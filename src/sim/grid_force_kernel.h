@@ -33,6 +33,24 @@ struct Job {
     double wind[3] = {};                 // m/s
     int direction_count = 0;
     Direction directions[max_directions] = {};
+    // The fused symplectic Euler step (grid_force_pass.h), when `next_positions` is set: the
+    // force is not stored but used at once, v' = v + (dt m⁻¹) f, x' = x + dt v', written to
+    // next_velocities and next_positions (never the arrays read above, so no band reads a
+    // row another has already advanced).
+    double dt = 0.0;                         // s
+    const double* inverse_masses = nullptr;  // 1/kg, 0 for a pinned particle
+    double* next_positions = nullptr;        // m, x y z per particle
+    double* next_velocities = nullptr;       // m/s
+    // And, when `reference_positions` is set, the divergence guard's sweep of the new state
+    // (as sweep_particles below) in the same pass.
+    const double* reference_positions = nullptr;  // m
+    double moved_limit_squared = 0.0;             // m²
+};
+
+// What the guard's sweep found: a non-finite value, a particle far from its reference.
+struct SweepFlags {
+    bool non_finite = false;
+    bool moved = false;
 };
 
 // Doubles of scratch one thread needs for a cloth `cols` wide.
@@ -43,11 +61,13 @@ inline std::size_t scratch_doubles(int cols) {
     return 3 * 6 * padded + 3 * max_directions * 3 * padded + 3 * padded + padded;
 }
 
-// Writes the total force on every particle of rows [row_begin, row_end). Reads positions and
-// velocities of rows up to row_end + 1 and recomputes the springs of the two rows above the
-// band, so bands are independent and the result does not depend on how rows are split.
-void force_rows_baseline(const Job& job, int row_begin, int row_end, double* scratch);
-void force_rows_avx2(const Job& job, int row_begin, int row_end, double* scratch);
+// Writes the total force on every particle of rows [row_begin, row_end) — or, for a fused
+// step, advances them. Reads positions and velocities of rows up to row_end + 1 and
+// recomputes the springs of the two rows above the band, so bands are independent and the
+// result does not depend on how rows are split. Returns the fused sweep's findings.
+SweepFlags force_rows_baseline(const Job& job, int row_begin, int row_end, double* scratch);
+SweepFlags force_rows_avx2(const Job& job, int row_begin, int row_end, double* scratch);
+SweepFlags force_rows_avx512(const Job& job, int row_begin, int row_end, double* scratch);
 
 // True if some live spring starting on rows [row_begin, row_end) may be longer than
 // sqrt(ratio_squared) rest lengths: |d|² > ratio_squared L² (the divergence guard's test).
@@ -55,6 +75,8 @@ bool rows_maybe_overstretched_baseline(const Job& job, double ratio_squared, int
                                        int row_end);
 bool rows_maybe_overstretched_avx2(const Job& job, double ratio_squared, int row_begin,
                                    int row_end);
+bool rows_maybe_overstretched_avx512(const Job& job, double ratio_squared, int row_begin,
+                                     int row_end);
 
 // The divergence guard's particle sweep over interleaved arrays (x y z per particle):
 // whether a position or velocity is not finite, and whether some particle has moved from
@@ -64,5 +86,7 @@ void sweep_particles_baseline(const double* x, const double* reference, const do
                               bool& moved);
 void sweep_particles_avx2(const double* x, const double* reference, const double* v,
                           std::size_t count, double limit_squared, bool& non_finite, bool& moved);
+void sweep_particles_avx512(const double* x, const double* reference, const double* v,
+                            std::size_t count, double limit_squared, bool& non_finite, bool& moved);
 
 }  // namespace weft::grid_kernel

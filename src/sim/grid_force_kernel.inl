@@ -148,7 +148,50 @@ void gather_row(double* __restrict sum, const double* __restrict mass,
     }
 }
 
-void force_rows(const Job& job, int row_begin, int row_end, double* scratch) {
+void store_forces(const double* __restrict sum_x, const double* __restrict sum_y,
+                  const double* __restrict sum_z, double* __restrict f, std::size_t count) {
+    for (std::size_t c = 0; c < count; ++c) {
+        f[3 * c] = sum_x[c];
+        f[3 * c + 1] = sum_y[c];
+        f[3 * c + 2] = sum_z[c];
+    }
+}
+
+// Symplectic Euler on one row, with the force f still in registers' reach:
+//     v' = v + (dt m⁻¹) f,   x' = x + dt v'
+// in the same operations, in the same order, as step_symplectic_euler's loop over Vec3, so
+// the fused step and the separate one give the same bits. `state` is the row's slot in the
+// state ring (x, y, z, then the velocity's three components, `padded` apart).
+void advance_row(const double* __restrict sum_x, const double* __restrict sum_y,
+                 const double* __restrict sum_z, const double* state, std::size_t padded,
+                 const double* __restrict inverse_mass, double dt, double* __restrict next_x,
+                 double* __restrict next_v, std::size_t count) {
+    const double* __restrict x = state;
+    const double* __restrict y = state + padded;
+    const double* __restrict z = state + 2 * padded;
+    const double* __restrict u = state + 3 * padded;
+    const double* __restrict v = state + 4 * padded;
+    const double* __restrict w = state + 5 * padded;
+    for (std::size_t c = 0; c < count; ++c) {
+        const double scale = dt * inverse_mass[c];  // s/kg
+        const double vx = u[c] + scale * sum_x[c];
+        const double vy = v[c] + scale * sum_y[c];
+        const double vz = w[c] + scale * sum_z[c];
+        next_v[3 * c] = vx;
+        next_v[3 * c + 1] = vy;
+        next_v[3 * c + 2] = vz;
+        next_x[3 * c] = x[c] + dt * vx;
+        next_x[3 * c + 1] = y[c] + dt * vy;
+        next_x[3 * c + 2] = z[c] + dt * vz;
+    }
+}
+
+void sweep_particles(const double* __restrict x, const double* __restrict reference,
+                     const double* __restrict v, std::size_t count, double limit_squared,
+                     bool& non_finite, bool& moved);
+
+SweepFlags force_rows(const Job& job, int row_begin, int row_end, double* scratch) {
+    SweepFlags flags;
     const std::size_t padded = static_cast<std::size_t>(job.cols + 2 * row_padding);
     const std::size_t cols = static_cast<std::size_t>(job.cols);
     double* state_ring = scratch;                    // 3 rows × 6 components
@@ -200,16 +243,24 @@ void force_rows(const Job& job, int row_begin, int row_end, double* scratch) {
                 gather_row<false>(sum[a], mass, velocity, job.gravity[a], 0.0, 0.0, starting,
                                   ending, cols);
         }
-        const double* __restrict sum_x = sum[0];
-        const double* __restrict sum_y = sum[1];
-        const double* __restrict sum_z = sum[2];
-        double* __restrict f = job.forces + static_cast<std::size_t>(row) * cols * 3;
-        for (std::size_t c = 0; c < cols; ++c) {
-            f[3 * c] = sum_x[c];
-            f[3 * c + 1] = sum_y[c];
-            f[3 * c + 2] = sum_z[c];
+        const std::size_t first = static_cast<std::size_t>(row) * cols;
+        if (!job.next_positions) {
+            store_forces(sum[0], sum[1], sum[2], job.forces + 3 * first, cols);
+            continue;
+        }
+        double* next_x = job.next_positions + 3 * first;
+        double* next_v = job.next_velocities + 3 * first;
+        advance_row(sum[0], sum[1], sum[2], state, padded, job.inverse_masses + first, job.dt,
+                    next_x, next_v, cols);
+        if (job.reference_positions) {
+            bool non_finite = false, moved = false;
+            sweep_particles(next_x, job.reference_positions + 3 * first, next_v, cols,
+                            job.moved_limit_squared, non_finite, moved);
+            flags.non_finite = flags.non_finite || non_finite;
+            flags.moved = flags.moved || moved;
         }
     }
+    return flags;
 }
 
 // The divergence guard's stretch test on rows [row_begin, row_end): true if some live spring

@@ -1,8 +1,10 @@
 #include "sim/grid_force_pass.h"
 
+#include <algorithm>
 #include <atomic>
 #include <vector>
 
+#include "sim/drag.h"
 #include "sim/force_pass.h"
 #include "sim/grid_force_kernel.h"
 
@@ -17,12 +19,16 @@ constexpr std::size_t min_particles_for_threads = 4096;
 
 SimdLevel detect_simd_level() {
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+        __builtin_cpu_supports("avx512dq"))
+        return SimdLevel::avx512;
     if (__builtin_cpu_supports("avx2")) return SimdLevel::avx2;
 #endif
     return SimdLevel::baseline;
 }
 
 std::atomic<SimdLevel> current_level{detect_simd_level()};
+std::atomic<bool> fused_steps_enabled{true};
 
 // Scratch of each thread (the pool's threads are persistent): grown on first use, so no
 // step allocates once the first has run.
@@ -50,6 +56,21 @@ bool describe_stencil(const Cloth& cloth, std::span<const Vec3> positions, grid_
     return true;
 }
 
+void describe_field(const ForceField& field, grid_kernel::Job& job) {
+    for (int k = 0; k < 3; ++k) {
+        job.gravity[k] = field.gravity[k];
+        job.wind[k] = field.wind[k];
+    }
+    job.air_drag = field.air_drag;
+}
+
+// The build of a kernel function for the current SIMD level.
+template <class Function>
+Function* kernel_of(Function* baseline, Function* avx2, Function* avx512) {
+    const SimdLevel level = simd_level();
+    return level == SimdLevel::avx512 ? avx512 : level == SimdLevel::avx2 ? avx2 : baseline;
+}
+
 bool use_threads(const Cloth& cloth, WorkerPool* pool) {
     return pool && pool->thread_count() > 1 && cloth.particle_count() >= min_particles_for_threads;
 }
@@ -66,13 +87,14 @@ SimdLevel simd_level() {
 }
 
 void set_simd_level(SimdLevel level) {
-    if (level == SimdLevel::avx2 && supported_simd_level() != SimdLevel::avx2)
-        level = SimdLevel::baseline;
+    level = std::min(level, supported_simd_level());
     current_level.store(level, std::memory_order_relaxed);
 }
 
 const char* simd_level_name(SimdLevel level) {
-    return level == SimdLevel::avx2 ? "avx2" : "baseline x86-64";
+    return level == SimdLevel::avx512 ? "avx-512"
+           : level == SimdLevel::avx2 ? "avx2"
+                                      : "baseline x86-64";
 }
 
 bool accumulate_grid_forces(const Cloth& cloth, const ForceField& field,
@@ -82,13 +104,9 @@ bool accumulate_grid_forces(const Cloth& cloth, const ForceField& field,
     if (!grid_stencil_usable(cloth) || !describe_stencil(cloth, positions, job)) return false;
     job.velocities = &velocities.data()->x;
     job.forces = &forces.data()->x;
-    for (int k = 0; k < 3; ++k) {
-        job.gravity[k] = field.gravity[k];
-        job.wind[k] = field.wind[k];
-    }
-    job.air_drag = field.air_drag;
-    const auto kernel = simd_level() == SimdLevel::avx2 ? grid_kernel::force_rows_avx2
-                                                        : grid_kernel::force_rows_baseline;
+    describe_field(field, job);
+    const auto kernel = kernel_of(grid_kernel::force_rows_baseline, grid_kernel::force_rows_avx2,
+                                  grid_kernel::force_rows_avx512);
     if (!use_threads(cloth, pool)) {
         kernel(job, 0, job.rows, thread_scratch(job.cols));
         return true;
@@ -99,15 +117,66 @@ bool accumulate_grid_forces(const Cloth& cloth, const ForceField& field,
     return true;
 }
 
+void set_fused_grid_steps(bool enabled) {
+    fused_steps_enabled.store(enabled, std::memory_order_relaxed);
+}
+
+bool fused_grid_steps() {
+    return fused_steps_enabled.load(std::memory_order_relaxed);
+}
+
+bool step_grid_symplectic_euler(Cloth& cloth, const ForceField& field, double dt,
+                                std::vector<Vec3>& next_positions,
+                                std::vector<Vec3>& next_velocities, const SweepRequest* sweep,
+                                ParticleSweep* sweep_result, WorkerPool* pool) {
+    if (!fused_grid_steps() || (field.drag && field.drag->active()) || !field.colliders.empty())
+        return false;
+    grid_kernel::Job job;
+    if (!grid_stencil_usable(cloth) || !describe_stencil(cloth, cloth.positions, job)) return false;
+    const std::size_t count = cloth.particle_count();
+    if (next_positions.size() != count) next_positions.resize(count);
+    if (next_velocities.size() != count) next_velocities.resize(count);
+    job.velocities = &cloth.velocities.data()->x;
+    describe_field(field, job);
+    job.dt = dt;
+    job.inverse_masses = cloth.inverse_masses.data();
+    job.next_positions = &next_positions.data()->x;
+    job.next_velocities = &next_velocities.data()->x;
+    if (sweep) {
+        job.reference_positions = &sweep->reference_positions->x;
+        job.moved_limit_squared = sweep->limit_squared;
+    }
+    const auto kernel = kernel_of(grid_kernel::force_rows_baseline, grid_kernel::force_rows_avx2,
+                                  grid_kernel::force_rows_avx512);
+    grid_kernel::SweepFlags flags;
+    if (!use_threads(cloth, pool)) {
+        flags = kernel(job, 0, job.rows, thread_scratch(job.cols));
+    } else {
+        std::atomic<bool> non_finite{false}, moved{false};
+        pool->parallel_for(
+            static_cast<std::size_t>(job.rows), [&](std::size_t begin, std::size_t end) {
+                const grid_kernel::SweepFlags band = kernel(
+                    job, static_cast<int>(begin), static_cast<int>(end), thread_scratch(job.cols));
+                if (band.non_finite) non_finite.store(true, std::memory_order_relaxed);
+                if (band.moved) moved.store(true, std::memory_order_relaxed);
+            });
+        flags = {non_finite.load(), moved.load()};
+    }
+    cloth.positions.swap(next_positions);
+    cloth.velocities.swap(next_velocities);
+    if (sweep && sweep_result) *sweep_result = {flags.non_finite, flags.moved};
+    return true;
+}
+
 std::optional<bool> grid_springs_maybe_longer_than(const Cloth& cloth, double ratio,
                                                    WorkerPool* pool) {
     grid_kernel::Job job;
     if (!grid_stencil_usable(cloth) || !describe_stencil(cloth, cloth.positions, job))
         return std::nullopt;
     const double ratio_squared = ratio * ratio * (1.0 - 1e-9);
-    const auto kernel = simd_level() == SimdLevel::avx2
-                            ? grid_kernel::rows_maybe_overstretched_avx2
-                            : grid_kernel::rows_maybe_overstretched_baseline;
+    const auto kernel = kernel_of(grid_kernel::rows_maybe_overstretched_baseline,
+                                  grid_kernel::rows_maybe_overstretched_avx2,
+                                  grid_kernel::rows_maybe_overstretched_avx512);
     if (!use_threads(cloth, pool)) return kernel(job, ratio_squared, 0, job.rows);
     std::atomic<bool> suspect{false};
     pool->parallel_for(static_cast<std::size_t>(job.rows), [&](std::size_t begin, std::size_t end) {
@@ -120,8 +189,9 @@ std::optional<bool> grid_springs_maybe_longer_than(const Cloth& cloth, double ra
 ParticleSweep sweep_particles(std::span<const Vec3> positions, std::span<const Vec3> reference,
                               std::span<const Vec3> velocities, double limit_squared,
                               WorkerPool* pool) {
-    const auto kernel = simd_level() == SimdLevel::avx2 ? grid_kernel::sweep_particles_avx2
-                                                        : grid_kernel::sweep_particles_baseline;
+    const auto kernel =
+        kernel_of(grid_kernel::sweep_particles_baseline, grid_kernel::sweep_particles_avx2,
+                  grid_kernel::sweep_particles_avx512);
     const std::size_t count = positions.size();
     auto sweep = [&](std::size_t begin, std::size_t end, bool& non_finite, bool& moved) {
         kernel(&positions[begin].x, &reference[begin].x, &velocities[begin].x, end - begin,

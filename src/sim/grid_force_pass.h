@@ -9,6 +9,7 @@
 
 #include <optional>
 #include <span>
+#include <vector>
 
 #include "parallel/worker_pool.h"
 #include "sim/cloth.h"
@@ -18,7 +19,7 @@ namespace weft {
 struct ForceField;
 
 // Which build of the row kernel runs. The default is the best the CPU supports.
-enum class SimdLevel { baseline, avx2 };
+enum class SimdLevel { baseline, avx2, avx512 };
 SimdLevel supported_simd_level();
 SimdLevel simd_level();
 void set_simd_level(SimdLevel level);  // clamped to what the CPU supports; for tests, benches
@@ -31,19 +32,44 @@ bool accumulate_grid_forces(const Cloth& cloth, const ForceField& field,
                             std::span<const Vec3> positions, std::span<const Vec3> velocities,
                             std::span<Vec3> forces, WorkerPool* pool);
 
+// The divergence guard's sweep over the particles (divergence.h): whether any position or
+// velocity is not finite, and whether any particle is at |x - x_ref|² >= limit_squared from
+// its reference position.
+struct ParticleSweep {
+    bool non_finite = false;
+    bool moved = false;
+};
+struct SweepRequest {
+    const Vec3* reference_positions = nullptr;  // m, x_ref, one per particle
+    double limit_squared = 0.0;                 // m²
+};
+
+// One symplectic Euler step in the structured pass itself: each particle's force is used
+// as soon as it is summed, v' = v + (dt m⁻¹) f, x' = x + dt v', so the forces never make a
+// round trip through memory, and the step is one split between threads instead of two. The
+// new state is written to `next_positions` and `next_velocities` (resized on first use),
+// which are then swapped with the cloth's. Same bits as the force pass followed by
+// step_symplectic_euler's loop (tested).
+//
+// With `sweep`, the guard's sweep of the new state is done in the same pass, into
+// `sweep_result`. Returns false, touching nothing, when the pass cannot take the step: no
+// usable grid stencil, or a force the pass does not compute (the drag handle, repulsion).
+//
+// set_fused_grid_steps(false) turns the fusion off (tests and benchmarks compare the two).
+void set_fused_grid_steps(bool enabled);
+bool fused_grid_steps();
+bool step_grid_symplectic_euler(Cloth& cloth, const ForceField& field, double dt,
+                                std::vector<Vec3>& next_positions,
+                                std::vector<Vec3>& next_velocities, const SweepRequest* sweep,
+                                ParticleSweep* sweep_result, WorkerPool* pool);
+
 // The divergence guard's stretch test over the stencil: whether some live spring may be
 // longer than `ratio` rest lengths, by |d|² > ratio² (1 - 1e-9) L² — a superset of the exact
 // test |d| > ratio L, which the caller then runs. Nothing when there is no usable stencil.
 std::optional<bool> grid_springs_maybe_longer_than(const Cloth& cloth, double ratio,
                                                    WorkerPool* pool);
 
-// The divergence guard's sweep over the particles (divergence.h), vectorised with the same
-// kernel builds: whether any position or velocity is not finite, and whether any particle
-// is at |x - x_ref|² >= limit_squared from its reference position.
-struct ParticleSweep {
-    bool non_finite = false;
-    bool moved = false;
-};
+// The guard's sweep on its own, vectorised with the same kernel builds.
 ParticleSweep sweep_particles(std::span<const Vec3> positions, std::span<const Vec3> reference,
                               std::span<const Vec3> velocities, double limit_squared,
                               WorkerPool* pool);

@@ -60,6 +60,9 @@ StepReport Simulation::step() {
     field_.drag = drag_.active() ? &drag_ : nullptr;
     field_.colliders =
         has_repulsion_ ? std::span<const Collider>(colliders_) : std::span<const Collider>();
+    const bool check_runaway_stretch = !scene_.tear_max_stretch;
+    workspace_.sweep_request = divergence_guard_.sweep_request(cloth_, check_runaway_stretch);
+    workspace_.sweep_result.reset();
     step_function_(cloth_, field_, dt_, workspace_);
     field_.drag = nullptr;
     field_.colliders = {};
@@ -80,8 +83,10 @@ StepReport Simulation::step() {
     if (report.springs_torn || corrections) workspace_.history_valid = false;
     // With tearing on, a runaway spring breaks instead of stretching without bound, so only
     // non-finite values count as divergence.
-    report.divergence = divergence_guard_.check(
-        cloth_, /*check_runaway_stretch=*/!scene_.tear_max_stretch, pool_.get());
+    // A sweep done during the step stands only if nothing has moved a particle since.
+    report.divergence =
+        divergence_guard_.check(cloth_, check_runaway_stretch, pool_.get(),
+                                corrections == 0 ? workspace_.sweep_result : std::nullopt);
     return report;
 }
 

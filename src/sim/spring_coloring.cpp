@@ -29,7 +29,8 @@ void colour_springs(SpringGroup& group, std::size_t particle_count) {
     for (std::size_t c = 1; c < starts.size(); ++c) starts[c] += starts[c - 1];
     std::vector<Spring> sorted(group.springs.size());
     std::vector<std::uint32_t> next(starts.begin(), starts.end() - 1);
-    for (std::size_t s = 0; s < group.springs.size(); ++s) sorted[next[colour[s]]++] = group.springs[s];
+    for (std::size_t s = 0; s < group.springs.size(); ++s)
+        sorted[next[colour[s]]++] = group.springs[s];
     group.springs = std::move(sorted);
     // The first spring of every colour in use, then the end of the parallel colours, which is
     // where the serial remainder starts.

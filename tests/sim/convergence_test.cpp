@@ -102,7 +102,7 @@ INSTANTIATE_TEST_SUITE_P(AllIntegrators, ConvergenceOrder,
                                            OrderCase{Integrator::verlet, 4e-3, 2.0},
                                            OrderCase{Integrator::velocity_verlet, 4e-3, 2.0},
                                            OrderCase{Integrator::rk4, 2e-2, 4.0},
-                      OrderCase{Integrator::implicit_euler, 1e-3, 1.0}),
+                                           OrderCase{Integrator::implicit_euler, 1e-3, 1.0}),
                          testing::IntegratorParamName());
 
 // The same orders on a whole damped sheet with all three spring families, moving in 3-D
@@ -154,7 +154,7 @@ INSTANTIATE_TEST_SUITE_P(AllIntegrators, SheetConvergenceOrder,
                                            OrderCase{Integrator::verlet, 1e-3, 2.0},
                                            OrderCase{Integrator::velocity_verlet, 1e-3, 2.0},
                                            OrderCase{Integrator::rk4, 4e-3, 4.0},
-                      OrderCase{Integrator::implicit_euler, 2e-4, 1.0}),
+                                           OrderCase{Integrator::implicit_euler, 2e-4, 1.0}),
                          testing::IntegratorParamName());
 
 }  // namespace

@@ -126,16 +126,18 @@ TEST(Determinism, TheGeneralPassOnAnOffsetSheetGivesTheSameBitsOnAnyThreadCount)
     EXPECT_EQ(large_sheet_hash(3, Layout::offset), one);
 }
 
-TEST(Determinism, BaselineAndAvx2KernelsGiveTheSameStateBitForBit) {
-    if (supported_simd_level() != SimdLevel::avx2) GTEST_SKIP() << "no AVX2 on this CPU";
+TEST(Determinism, EveryKernelBuildGivesTheSameStateBitForBit) {
+    if (supported_simd_level() == SimdLevel::baseline) GTEST_SKIP() << "no AVX2 on this CPU";
     const SimdLevel before = simd_level();
     set_simd_level(SimdLevel::baseline);
     const std::uint64_t baseline = large_sheet_hash(2);
-    set_simd_level(SimdLevel::avx2);
-    const std::uint64_t avx2 = large_sheet_hash(2);
-    set_simd_level(before);
     ASSERT_NE(baseline, 0u);
-    EXPECT_EQ(avx2, baseline);
+    for (SimdLevel level : {SimdLevel::avx2, SimdLevel::avx512}) {
+        if (level > supported_simd_level()) continue;
+        set_simd_level(level);
+        EXPECT_EQ(large_sheet_hash(2), baseline) << simd_level_name(level);
+    }
+    set_simd_level(before);
 }
 
 TEST(Determinism, TheHashSeesEveryBit) {

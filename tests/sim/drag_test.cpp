@@ -74,7 +74,8 @@ TEST(Drag, AFastFlickDoesNotBlowUpTheCloth) {
     for (int frame = 0; frame < 200; ++frame) {
         // The target jumps 5 m back and forth every 1/60 s.
         simulation.move_drag_target(start + Vec3(frame % 2 ? 5.0 : -5.0, 0.0, 0.0));
-        for (int s = 0; s < 16; ++s) ASSERT_FALSE(simulation.step().diverged()) << "frame " << frame;
+        for (int s = 0; s < 16; ++s)
+            ASSERT_FALSE(simulation.step().diverged()) << "frame " << frame;
     }
 }
 

@@ -2,8 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
-#include <random>
 
+#include "loaded_cloth.h"
 #include "sim/cloth_builder.h"
 #include "sim/force_pass.h"
 
@@ -20,14 +20,8 @@ Scene sheet_with_all_families() {
     return scene;
 }
 
-// Random positions near the grid and random velocities: a state far from rest.
 void scramble(Cloth& cloth, unsigned seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> jitter(-0.02, 0.02), speed(-1.0, 1.0);
-    for (std::size_t p = 0; p < cloth.particle_count(); ++p) {
-        cloth.positions[p] += Vec3(jitter(rng), jitter(rng), jitter(rng));
-        cloth.velocities[p] = Vec3(speed(rng), speed(rng), speed(rng));
-    }
+    testing::scramble(cloth, seed, 0.02);
 }
 
 TEST(ForcePass, InternalSpringForcesSumToZero) {

@@ -1,12 +1,11 @@
 // The structured force pass (per-direction stencils over the grid) against the general one,
 // spring by spring: the same forces to rounding, dead springs masked, any thread count and
-// both kernel builds giving the same bits.
+// every kernel build giving the same bits.
 #include <gtest/gtest.h>
 
-#include <cstring>
 #include <glm/geometric.hpp>
-#include <random>
 
+#include "loaded_cloth.h"
 #include "sim/cloth_builder.h"
 #include "sim/force_pass.h"
 #include "sim/grid_force_pass.h"
@@ -26,22 +25,11 @@ Scene grid_scene(int rows, int cols) {
     return scene;
 }
 
-// Random positions near the grid and random velocities: every spring loaded and moving.
-void scramble(Cloth& cloth, unsigned seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> jitter(-0.008, 0.008), speed(-1.0, 1.0);
-    for (std::size_t p = 0; p < cloth.particle_count(); ++p) {
-        cloth.positions[p] += Vec3(jitter(rng), jitter(rng), jitter(rng));
-        cloth.velocities[p] = Vec3(speed(rng), speed(rng), speed(rng));
-    }
-}
+using testing::same_bits;
+using testing::windy_field;
 
-ForceField windy_field() {
-    ForceField field;
-    field.gravity = {0.5, -9.81, 0.25};
-    field.air_drag = 0.03;
-    field.wind = {1.0, 0.0, 2.0};
-    return field;
+void scramble(Cloth& cloth, unsigned seed) {
+    testing::scramble(cloth, seed, 0.008);
 }
 
 std::vector<Vec3> forces_of(const Cloth& cloth, const ForceField& field,
@@ -76,10 +64,6 @@ void expect_same_to_rounding(const Cloth& cloth, const std::vector<Vec3>& grid,
         const double scale = largest_term[p] + glm::length(general[p]) + 1e-300;
         ASSERT_LE(glm::length(grid[p] - general[p]), 1e-14 * scale) << "particle " << p;
     }
-}
-
-bool same_bits(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)) == 0;
 }
 
 TEST(GridForcePass, TheGridBuilderGivesAStencilAndTheOffsetLayoutDoesNot) {
@@ -156,17 +140,19 @@ TEST(GridForcePass, AnyThreadCountGivesTheSameBits) {
     }
 }
 
-TEST(GridForcePass, BaselineAndAvx2KernelsGiveTheSameBits) {
-    if (supported_simd_level() != SimdLevel::avx2) GTEST_SKIP() << "no AVX2 on this CPU";
+TEST(GridForcePass, EveryKernelBuildGivesTheSameBits) {
+    if (supported_simd_level() == SimdLevel::baseline) GTEST_SKIP() << "no AVX2 on this CPU";
     Cloth cloth = build_grid_cloth(grid_scene(33, 29));
     scramble(cloth, 13);
     const SimdLevel before = simd_level();
     set_simd_level(SimdLevel::baseline);
     const std::vector<Vec3> baseline = forces_of(cloth, windy_field());
-    set_simd_level(SimdLevel::avx2);
-    const std::vector<Vec3> avx2 = forces_of(cloth, windy_field());
+    for (SimdLevel level : {SimdLevel::avx2, SimdLevel::avx512}) {
+        if (level > supported_simd_level()) continue;
+        set_simd_level(level);
+        EXPECT_TRUE(same_bits(forces_of(cloth, windy_field()), baseline)) << simd_level_name(level);
+    }
     set_simd_level(before);
-    EXPECT_TRUE(same_bits(baseline, avx2));
 }
 
 TEST(GridForcePass, OverstretchTestFlagsOnlyLiveSpringsPastTheRatio) {

@@ -63,7 +63,7 @@ INSTANTIATE_TEST_SUITE_P(AllIntegrators, HangingSpringMatchesClosedForm,
                                            OscillatorCase{Integrator::verlet, 1e-3},
                                            OscillatorCase{Integrator::velocity_verlet, 1e-3},
                                            OscillatorCase{Integrator::rk4, 1e-2},
-                      OscillatorCase{Integrator::implicit_euler, 1e-6}),
+                                           OscillatorCase{Integrator::implicit_euler, 1e-6}),
                          testing::IntegratorParamName());
 
 TEST(Simulation, PinnedParticlesNeverMoveUnderAnyIntegrator) {

@@ -34,9 +34,9 @@ TEST(Picking, ARayThroughTheSheetHitsItAtTheRightPointAndCorner) {
 
 TEST(Picking, ARayThatMissesGrabsNothing) {
     const Cloth cloth = flat_sheet();
-    EXPECT_FALSE(cast_ray(cloth, {0.6, -0.2, 2.0}, {0.0, 0.0, -1.0}).has_value());   // beside it
-    EXPECT_FALSE(cast_ray(cloth, {0.2, -0.2, 2.0}, {0.0, 0.0, 1.0}).has_value());    // away from it
-    EXPECT_FALSE(cast_ray(cloth, {0.2, -0.2, 2.0}, {1.0, 0.0, 0.0}).has_value());    // parallel
+    EXPECT_FALSE(cast_ray(cloth, {0.6, -0.2, 2.0}, {0.0, 0.0, -1.0}).has_value());  // beside it
+    EXPECT_FALSE(cast_ray(cloth, {0.2, -0.2, 2.0}, {0.0, 0.0, 1.0}).has_value());   // away from it
+    EXPECT_FALSE(cast_ray(cloth, {0.2, -0.2, 2.0}, {1.0, 0.0, 0.0}).has_value());   // parallel
 }
 
 TEST(Picking, ARayThroughATearGrabsNothing) {

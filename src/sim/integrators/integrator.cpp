@@ -3,8 +3,9 @@
 namespace weft {
 
 void IntegratorWorkspace::resize(std::size_t particle_count) {
-    for (std::vector<Vec3>* array : {&forces, &accelerations, &previous_positions, &stage_positions,
-                                     &stage_velocities, &position_rate_sum, &velocity_rate_sum})
+    for (std::vector<Vec3>* array :
+         {&forces, &accelerations, &previous_positions, &stage_positions, &stage_velocities,
+          &position_rate_sum, &velocity_rate_sum, &next_positions, &next_velocities})
         array->assign(particle_count, Vec3(0.0));
     history_valid = false;
 }

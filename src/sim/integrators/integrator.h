@@ -6,10 +6,12 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "sim/cloth.h"
 #include "sim/force_pass.h"
+#include "sim/grid_force_pass.h"
 #include "sim/scene.h"
 
 namespace weft {
@@ -35,6 +37,13 @@ struct IntegratorWorkspace {
     std::vector<Vec3> stage_velocities;    // m/s
     std::vector<Vec3> position_rate_sum;   // m/s, RK4's weighted sum k1 + 2 k2 + 2 k3 + k4
     std::vector<Vec3> velocity_rate_sum;   // m/s²
+    // The fused grid step's output, swapped with the cloth's state after each step.
+    std::vector<Vec3> next_positions;   // m
+    std::vector<Vec3> next_velocities;  // m/s
+    // The divergence guard's sweep, done by a fused step on the way: what the guard asks
+    // for (set by the caller before the step) and what the step found, if it did the sweep.
+    std::optional<SweepRequest> sweep_request;
+    std::optional<ParticleSweep> sweep_result;
     // False whenever the carried history no longer belongs to the current state and dt: at
     // the start, after a change of dt or integrator, or after the state was edited (a drag).
     // Implicit Euler (allocated on its first step): the solution Δv (kept: the warm start),

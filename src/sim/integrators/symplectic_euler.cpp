@@ -7,6 +7,15 @@ namespace weft {
 
 void step_symplectic_euler(Cloth& cloth, const ForceField& field, double dt,
                            IntegratorWorkspace& work) {
+    // A plain grid steps in the force pass itself (grid_force_pass.h): the same bits.
+    ParticleSweep sweep;
+    if (step_grid_symplectic_euler(cloth, field, dt, work.next_positions, work.next_velocities,
+                                   work.sweep_request ? &*work.sweep_request : nullptr, &sweep,
+                                   work.pool)) {
+        ++work.force_evaluations;
+        if (work.sweep_request) work.sweep_result = sweep;
+        return;
+    }
     evaluate_forces(cloth, field, cloth.positions, cloth.velocities, work);
     const std::size_t count = cloth.particle_count();
     Vec3* x = cloth.positions.data();

@@ -135,14 +135,14 @@ void transform_vertices(const glm::mat4& view_projection, const MeshView& mesh, 
                         PreparedMesh& prepared, std::size_t begin, std::size_t end) {
     const glm::mat4 clip_from_model = view_projection * mesh.model;
     const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(mesh.model)));
-    const auto height = static_cast<float>(prepared.height);
     for (std::size_t i = begin; i < end; ++i) {
         const glm::vec4 model_position(mesh.positions[i], 1.0f);
         ClipVertex& vertex = prepared.vertices[i];
         vertex.position = clip_from_model * model_position;
         prepared.outcodes[i] = clip_outcode(vertex.position);
-        // The same row the triangle setup computes (viewport.h), for vertices in front.
-        prepared.window_y[i] = (1.0f - vertex.position.y / vertex.position.w) * 0.5f * height;
+        // What setup would compute for this corner of each of its triangles, once.
+        if ((prepared.outcodes[i] & clipping_planes) == 0)
+            prepared.window[i] = window_vertex(vertex.position, prepared.width, prepared.height);
         const glm::vec3 world(mesh.model * model_position);
         const glm::vec3 normal = normal_matrix * mesh.normals[i];
         float* v = vertex.varyings.data();
@@ -160,38 +160,94 @@ void transform_vertices(const glm::mat4& view_projection, const MeshView& mesh, 
     }
 }
 
-template <bool HasUv, bool HasColour>
+// Draws the triangles `for_each_triangle` visits (it calls its argument with each index,
+// in order) inside `scissor`.
+template <bool HasUv, bool HasColour, class TriangleVisitor>
 void draw_prepared_with(Framebuffer& framebuffer, const PreparedMesh& prepared,
                         const SurfaceStyle& style, const Lighting& lighting,
-                        const PixelRect& scissor) {
+                        const PixelRect& scissor, TriangleVisitor&& for_each_triangle) {
     using Shader = SurfaceShader<HasUv, HasColour>;
     const std::size_t count = prepared.vertices.size();
     const ClipVertex* vertices = prepared.vertices.data();
     const std::uint32_t* outcodes = prepared.outcodes.data();
-    const float* window_y = prepared.window_y.data();
+    const WindowVertex* window = prepared.window.data();
+    const TriangleIndices* triangles = prepared.triangles.data();
     const PixelRect bounds = scissor.intersect(framebuffer.bounds());
     if (bounds.empty()) return;
-    // A triangle entirely above or below the band draws nothing in it: a pixel margin on
-    // either side keeps this safe against the setup's snapping to 1/256 pixel.
-    const float band_top = static_cast<float>(bounds.y_begin) - 1.0f;
-    const float band_bottom = static_cast<float>(bounds.y_end) + 1.0f;
+    // A triangle whose snapped corners all lie a pixel or more above or below the band
+    // draws nothing in it (the pixel centres it may cover lie between its corners).
+    const std::int64_t band_top = (std::int64_t{bounds.y_begin} - 1) * subpixel_scale;
+    const std::int64_t band_bottom = (std::int64_t{bounds.y_end} + 1) * subpixel_scale;
 
     // Cull, clip, rasterize, shade: triangle_rasterizer.h.
     const Shader shader{&style, prepare(style, lighting), prepared.eye};
     RasterState state;
     state.scissor = bounds;
-    for (const TriangleIndices& t : prepared.triangles) {
+    for_each_triangle([&](std::size_t index) {
+        const TriangleIndices& t = triangles[index];
+        if (t[0] >= count || t[1] >= count || t[2] >= count) return;
+        const TriangleOutcodes codes{outcodes[t[0]], outcodes[t[1]], outcodes[t[2]]};
+        if (codes.culled()) return;
+        if (!codes.needs_clipping()) {
+            const std::int64_t y0 = window[t[0]].y, y1 = window[t[1]].y, y2 = window[t[2]].y;
+            if ((y0 < band_top && y1 < band_top && y2 < band_top) ||
+                (y0 > band_bottom && y1 > band_bottom && y2 > band_bottom))
+                return;
+        }
+        draw_triangle(framebuffer, state, vertices[t[0]], vertices[t[1]], vertices[t[2]],
+                      window[t[0]], window[t[1]], window[t[2]], codes, shader);
+    });
+}
+
+// The shader variant the prepared mesh needs, drawing the triangles `for_each_triangle`
+// visits.
+template <class TriangleVisitor>
+void draw_prepared_triangles(Framebuffer& framebuffer, const PreparedMesh& prepared,
+                             const SurfaceStyle& style, const Lighting& lighting,
+                             const PixelRect& scissor, TriangleVisitor&& for_each_triangle) {
+    if (prepared.with_uv && prepared.with_colour) {
+        draw_prepared_with<true, true>(framebuffer, prepared, style, lighting, scissor,
+                                       for_each_triangle);
+    } else if (prepared.with_uv) {
+        draw_prepared_with<true, false>(framebuffer, prepared, style, lighting, scissor,
+                                        for_each_triangle);
+    } else if (prepared.with_colour) {
+        draw_prepared_with<false, true>(framebuffer, prepared, style, lighting, scissor,
+                                        for_each_triangle);
+    } else {
+        draw_prepared_with<false, false>(framebuffer, prepared, style, lighting, scissor,
+                                         for_each_triangle);
+    }
+}
+
+// Triangles [begin, end) into the bands they may reach: lists[slice * band_count + band].
+void bin_triangle_run(const PreparedMesh& prepared, std::size_t begin, std::size_t end, int slice,
+                      TriangleBands& bands) {
+    const std::size_t count = prepared.vertices.size();
+    const std::uint32_t* outcodes = prepared.outcodes.data();
+    const WindowVertex* window = prepared.window.data();
+    const PixelRect viewport{0, 0, prepared.width, prepared.height};
+    std::vector<std::uint32_t>* lists = bands.lists.data() + slice * bands.band_count;
+    const std::int64_t rows_per_band = std::int64_t{bands.band_height} * subpixel_scale;
+    for (std::size_t index = begin; index < end; ++index) {
+        const TriangleIndices& t = prepared.triangles[index];
         if (t[0] >= count || t[1] >= count || t[2] >= count) continue;
         const TriangleOutcodes codes{outcodes[t[0]], outcodes[t[1]], outcodes[t[2]]};
         if (codes.culled()) continue;
+        int first = 0, last = bands.band_count - 1;
         if (!codes.needs_clipping()) {
-            const float y0 = window_y[t[0]], y1 = window_y[t[1]], y2 = window_y[t[2]];
-            if ((y0 < band_top && y1 < band_top && y2 < band_top) ||
-                (y0 > band_bottom && y1 > band_bottom && y2 > band_bottom))
-                continue;
+            const WindowVertex &a = window[t[0]], &b = window[t[1]], &c = window[t[2]];
+            if (!may_cover_pixels(a, b, c, viewport)) continue;
+            // The bands of the rows between its corners (on the viewport: covered pixels
+            // are), with the draw's own pixel of margin.
+            const std::int64_t top = std::min({a.y, b.y, c.y}) - subpixel_scale;
+            const std::int64_t bottom = std::max({a.y, b.y, c.y}) + subpixel_scale;
+            first = static_cast<int>(std::max<std::int64_t>(top, 0) / rows_per_band);
+            last = static_cast<int>(std::min<std::int64_t>(
+                std::max<std::int64_t>(bottom, 0) / rows_per_band, bands.band_count - 1));
         }
-        draw_triangle(framebuffer, state, vertices[t[0]], vertices[t[1]], vertices[t[2]], codes,
-                      shader);
+        for (int band = first; band <= last; ++band)
+            lists[band].push_back(static_cast<std::uint32_t>(index));
     }
 }
 
@@ -228,7 +284,7 @@ bool prepare_mesh(const Camera& camera, int width, int height, const MeshView& m
     prepared.triangles = mesh.triangles;
     prepared.vertices.resize(count);
     prepared.outcodes.resize(count);
-    prepared.window_y.resize(count);
+    prepared.window.resize(count);
     prepared.width = width;
     prepared.height = height;
     prepared.eye = camera.position;
@@ -253,15 +309,52 @@ bool prepare_mesh(const Camera& camera, int width, int height, const MeshView& m
 void draw_prepared_mesh(Framebuffer& framebuffer, const PreparedMesh& prepared,
                         const SurfaceStyle& style, const Lighting& lighting,
                         const PixelRect& scissor) {
-    if (prepared.with_uv && prepared.with_colour) {
-        draw_prepared_with<true, true>(framebuffer, prepared, style, lighting, scissor);
-    } else if (prepared.with_uv) {
-        draw_prepared_with<true, false>(framebuffer, prepared, style, lighting, scissor);
-    } else if (prepared.with_colour) {
-        draw_prepared_with<false, true>(framebuffer, prepared, style, lighting, scissor);
-    } else {
-        draw_prepared_with<false, false>(framebuffer, prepared, style, lighting, scissor);
+    draw_prepared_triangles(framebuffer, prepared, style, lighting, scissor, [&](auto&& draw) {
+        for (std::size_t index = 0; index < prepared.triangles.size(); ++index) draw(index);
+    });
+}
+
+PixelRect TriangleBands::band_rect(int band, int width, int height) const {
+    return {0, std::min(band * band_height, height), width,
+            std::min((band + 1) * band_height, height)};
+}
+
+void bin_triangles(const PreparedMesh& prepared, int band_height, TriangleBands& bands,
+                   WorkerPool* pool) {
+    bands.band_height = std::max(band_height, 1);
+    bands.band_count = std::max((prepared.height + bands.band_height - 1) / bands.band_height, 1);
+    const std::size_t triangle_count = prepared.triangles.size();
+    constexpr std::size_t min_triangles_for_threads = 4096;
+    const bool threaded =
+        pool && pool->thread_count() > 1 && triangle_count >= min_triangles_for_threads;
+    bands.slice_count = threaded ? pool->thread_count() : 1;
+    const auto list_count = static_cast<std::size_t>(bands.slice_count * bands.band_count);
+    if (bands.lists.size() < list_count) bands.lists.resize(list_count);
+    for (std::vector<std::uint32_t>& list : bands.lists) list.clear();
+    if (!threaded) {
+        bin_triangle_run(prepared, 0, triangle_count, 0, bands);
+        return;
     }
+    // One run per slice, so each slice writes only its own lists.
+    const auto slices = static_cast<std::size_t>(bands.slice_count);
+    pool->parallel_for(slices, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t slice = begin; slice < end; ++slice)
+            bin_triangle_run(prepared, triangle_count * slice / slices,
+                             triangle_count * (slice + 1) / slices, static_cast<int>(slice), bands);
+    });
+}
+
+void draw_prepared_band(Framebuffer& framebuffer, const PreparedMesh& prepared,
+                        const TriangleBands& bands, int band, const SurfaceStyle& style,
+                        const Lighting& lighting) {
+    if (band < 0 || band >= bands.band_count) return;
+    const PixelRect rect = bands.band_rect(band, framebuffer.width(), framebuffer.height());
+    draw_prepared_triangles(framebuffer, prepared, style, lighting, rect, [&](auto&& draw) {
+        for (int slice = 0; slice < bands.slice_count; ++slice)
+            for (std::uint32_t index :
+                 bands.lists[static_cast<std::size_t>(slice * bands.band_count + band)])
+                draw(index);
+    });
 }
 
 bool draw_mesh(Framebuffer& framebuffer, const Camera& camera, const MeshView& mesh,

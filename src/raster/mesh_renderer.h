@@ -21,6 +21,7 @@
 #include "raster/framebuffer.h"
 #include "raster/mesh.h"
 #include "raster/pixel_rect.h"
+#include "raster/triangle_setup.h"
 
 namespace weft::raster {
 
@@ -66,17 +67,18 @@ bool draw_mesh(Framebuffer& framebuffer, const Camera& camera, const MeshView& m
                const PixelRect& scissor = PixelRect::unbounded());
 
 // A mesh's vertices transformed once for one camera and framebuffer size — clip position,
-// world-space varyings, frustum outcodes and window row — so that one draw can be split into
-// bands of the framebuffer, drawn by several threads, without transforming twice. It refers
-// to the mesh's triangles, so the MeshView's arrays must outlive it. Kept between frames, it
+// world-space varyings, frustum outcodes and snapped window position — so that one draw can be
+// split into bands of the framebuffer, drawn by several threads, without transforming twice. It
+// refers to the mesh's triangles, so the MeshView's arrays must outlive it. Kept between frames, it
 // allocates only when the mesh grows.
 struct PreparedMesh {
     std::span<const TriangleIndices> triangles;
     std::vector<ClipVertex> vertices;
     std::vector<std::uint32_t> outcodes;
-    std::vector<float> window_y;  // pixels, the row of each vertex (meaningless if it is clipped)
-    int width = 0, height = 0;    // of the framebuffer it was prepared for
-    glm::vec3 eye{0.0f};          // camera position, for the shader's view vector
+    // Each vertex through the divide, viewport and snap (meaningless where it needs clipping).
+    std::vector<WindowVertex> window;
+    int width = 0, height = 0;  // of the framebuffer it was prepared for
+    glm::vec3 eye{0.0f};        // camera position, for the shader's view vector
     bool with_uv = false, with_colour = false;
 };
 
@@ -91,5 +93,33 @@ bool prepare_mesh(const Camera& camera, int width, int height, const MeshView& m
 void draw_prepared_mesh(Framebuffer& framebuffer, const PreparedMesh& prepared,
                         const SurfaceStyle& style, const Lighting& lighting,
                         const PixelRect& scissor = PixelRect::unbounded());
+
+// A prepared mesh's triangles sorted into horizontal bands of the framebuffer, so that a
+// frame can be cut into many thin bands — an even share for every thread wherever the mesh
+// lies on screen — without every band testing every triangle. Kept between frames, it
+// allocates only when a list outgrows what it held before.
+struct TriangleBands {
+    int band_height = 0;  // rows; the last band may be shorter
+    int band_count = 0;
+    int slice_count = 0;  // the triangles were binned in this many consecutive runs
+    // The triangles of run s that may reach band b, in ascending order:
+    // lists[s * band_count + b]. Run after run, they are in the mesh's own order.
+    std::vector<std::vector<std::uint32_t>> lists;
+
+    PixelRect band_rect(int band, int width, int height) const;
+};
+
+// Sorts the prepared mesh's triangles into bands of `band_height` rows, splitting the
+// triangles between the pool's threads in consecutive runs. Triangles that would draw
+// nothing (culled, of zero area once snapped, or between pixel centres) go into no band;
+// those that need clipping into all.
+void bin_triangles(const PreparedMesh& prepared, int band_height, TriangleBands& bands,
+                   WorkerPool* pool = nullptr);
+
+// Draws band `band` of a prepared mesh from its binned triangles: exactly the pixels that
+// draw_prepared_mesh draws with the band's rows as scissor, in the same order.
+void draw_prepared_band(Framebuffer& framebuffer, const PreparedMesh& prepared,
+                        const TriangleBands& bands, int band, const SurfaceStyle& style,
+                        const Lighting& lighting);
 
 }  // namespace weft::raster

@@ -86,6 +86,7 @@ void traverse_and_shade(Framebuffer& framebuffer, const RasterState& state,
     const double inverse_step_x0 = setup.inverse_step_x[0],
                  inverse_step_x1 = setup.inverse_step_x[1],
                  inverse_step_x2 = setup.inverse_step_x[2];
+    const bool may_skip = inverse_step_x0 + inverse_step_x1 + inverse_step_x2 > 0.0;
     const float inverse_area = setup.inverse_doubled_area;
     const float depth0 = setup.depth[0], depth1 = setup.depth[1], depth2 = setup.depth[2];
     const float inverse_w0 = setup.inverse_w[0], inverse_w1 = setup.inverse_w[1],
@@ -100,7 +101,7 @@ void traverse_and_shade(Framebuffer& framebuffer, const RasterState& state,
             varying_over_w[i][k] = vertex[i]->varyings[k] * setup.inverse_w[i];
         }
     }
-    std::array<float, max_varyings> varyings{};
+    std::array<float, max_varyings> varyings;  // the first varying_count are set per pixel
     Fragment fragment;
     fragment.front_facing = setup.front_facing;
     fragment.varyings = varyings.data();
@@ -119,7 +120,7 @@ void traverse_and_shade(Framebuffer& framebuffer, const RasterState& state,
         // certainly outside. The floating-point estimate is backed off by one pixel so it
         // never skips a covered pixel; coverage itself is decided exactly below.
         int x = x_begin;
-        {
+        if (may_skip) {
             double skip = 0.0;
             if (e0 < 0) skip = std::max(skip, static_cast<double>(-e0) * inverse_step_x0);
             if (e1 < 0) skip = std::max(skip, static_cast<double>(-e1) * inverse_step_x1);
@@ -169,6 +170,17 @@ void traverse_and_shade(Framebuffer& framebuffer, const RasterState& state,
     }
 }
 
+// Stages 4–6 for a set-up triangle whose vertices were given as (a, b, c).
+template <class Shader>
+void traverse_set_up(Framebuffer& framebuffer, const RasterState& state, const TriangleSetup& setup,
+                     const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
+                     Shader& shader) {
+    const ClipVertex* const input[3] = {&a, &b, &c};
+    const ClipVertex* const ordered[3] = {
+        input[setup.vertex_order[0]], input[setup.vertex_order[1]], input[setup.vertex_order[2]]};
+    traverse_and_shade(framebuffer, state, setup, ordered, shader);
+}
+
 template <class Shader>
 void rasterize_clipped(Framebuffer& framebuffer, const RasterState& state, const PixelRect& scissor,
                        const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
@@ -178,10 +190,7 @@ void rasterize_clipped(Framebuffer& framebuffer, const RasterState& state, const
                         framebuffer.height(), scissor, setup)) {
         return;
     }
-    const ClipVertex* const input[3] = {&a, &b, &c};
-    const ClipVertex* const ordered[3] = {
-        input[setup.vertex_order[0]], input[setup.vertex_order[1]], input[setup.vertex_order[2]]};
-    traverse_and_shade(framebuffer, state, setup, ordered, shader);
+    traverse_set_up(framebuffer, state, setup, a, b, c, shader);
 }
 
 }  // namespace detail
@@ -214,6 +223,25 @@ void draw_triangle(Framebuffer& framebuffer, const RasterState& state, const Cli
         detail::rasterize_clipped(framebuffer, clamped, scissor, polygon.vertices[0],
                                   polygon.vertices[i], polygon.vertices[i + 1], shader);
     }
+}
+
+// The same for a triangle of a prepared mesh, whose vertices the caller has also taken
+// through the divide, viewport and snap (window_vertex: used unless the triangle needs
+// clipping), and whose state has its scissor already inside the framebuffer and its varying
+// count in range.
+template <class Shader>
+void draw_triangle(Framebuffer& framebuffer, const RasterState& state, const ClipVertex& a,
+                   const ClipVertex& b, const ClipVertex& c, const WindowVertex& window_a,
+                   const WindowVertex& window_b, const WindowVertex& window_c,
+                   const TriangleOutcodes& outcodes, Shader&& shader) {
+    if (outcodes.culled()) return;
+    if (outcodes.needs_clipping()) {
+        draw_triangle(framebuffer, state, a, b, c, outcodes, shader);
+        return;
+    }
+    TriangleSetup setup;
+    if (setup_triangle(window_a, window_b, window_c, state.scissor, setup))
+        detail::traverse_set_up(framebuffer, state, setup, a, b, c, shader);
 }
 
 template <class Shader>

@@ -29,6 +29,9 @@ namespace weft::raster {
 inline constexpr int subpixel_bits = 8;
 inline constexpr std::int64_t subpixel_scale = std::int64_t{1} << subpixel_bits;  // 256
 
+// Filled in by setup_triangle, and meaningful only when it returns true. The arrays have no
+// initialisers on purpose: a setup is made for every triangle drawn, and zeroing its ~200
+// bytes each time took 15 % of the pixel loop's time in a profile of a 128² cloth.
 struct TriangleSetup {
     // Pixels to visit: the bounding box of the snapped triangle ∩ the scissor, half-open.
     int x_begin = 0, y_begin = 0, x_end = 0, y_end = 0;
@@ -36,18 +39,19 @@ struct TriangleSetup {
     // Biased edge functions at the centre of pixel (x_begin, y_begin), in units of
     // 1/256² pixel², and their change per pixel step in x and in y. Edge i is opposite
     // vertex i, so its unbiased value divided by the doubled area is vertex i's barycentric.
-    std::int64_t edge_origin[3] = {};
-    std::int64_t step_x[3] = {};
-    std::int64_t step_y[3] = {};
-    std::int64_t bias[3] = {};  // 0 for top-left edges, -1 otherwise (already in edge_origin)
+    std::int64_t edge_origin[3];
+    std::int64_t step_x[3];
+    std::int64_t step_y[3];
+    std::int64_t bias[3];  // 0 for top-left edges, -1 otherwise (already in edge_origin)
 
     // 1 / step_x for edges that bound the span from the left (step_x > 0), else 0: lets the
     // pixel loop jump to near the first covered pixel of a row instead of testing every one.
-    double inverse_step_x[3] = {};
+    // All 0 for a box only a few pixels wide, whose rows are walked pixel by pixel.
+    double inverse_step_x[3];
 
     float inverse_doubled_area = 0.0f;  // 1 / (sum of the three unbiased edge values)
-    float depth[3] = {};                // window depth of each vertex, [0, 1]
-    float inverse_w[3] = {};            // 1/w of each vertex, for perspective correction
+    float depth[3];                     // window depth of each vertex, [0, 1]
+    float inverse_w[3];                 // 1/w of each vertex, for perspective correction
 
     // Setup vertex i is input vertex vertex_order[i]: front-facing triangles swap two
     // vertices so that the edge functions are positive inside.
@@ -59,11 +63,32 @@ struct TriangleSetup {
     bool front_facing = true;
 };
 
+// One vertex after the perspective divide, the viewport and the snap to fixed point: all
+// that setup needs of it. A mesh shares each vertex between about six triangles, so mesh
+// drawing makes these once per vertex (mesh_renderer.h) rather than once per corner.
+struct WindowVertex {
+    std::int64_t x = 0, y = 0;  // window coordinates × 256, rounded to nearest
+    float depth = 0.0f;         // window depth, [0, 1]
+    float inverse_w = 0.0f;     // 1 / w, for perspective correction
+};
+
+// The position must have w > 0 and lie inside the guard band (see clipping.h).
+WindowVertex window_vertex(const glm::vec4& clip, int viewport_width, int viewport_height);
+
 // Returns false if nothing can be drawn: zero area after snapping, or no pixel centre of
 // the bounding box inside `scissor` (which must already lie inside the framebuffer).
-// The positions must have w > 0 and lie inside the guard band (see clipping.h).
+bool setup_triangle(const WindowVertex& vertex0, const WindowVertex& vertex1,
+                    const WindowVertex& vertex2, const PixelRect& scissor, TriangleSetup& setup);
+
+// The same from clip-space positions (w > 0, inside the guard band).
 bool setup_triangle(const glm::vec4& clip0, const glm::vec4& clip1, const glm::vec4& clip2,
                     int viewport_width, int viewport_height, const PixelRect& scissor,
                     TriangleSetup& setup);
+
+// Whether setup_triangle would draw anything of the triangle with some scissor inside
+// `bounds`: false when it has zero area after snapping or no pixel centre of its bounding
+// box lies inside `bounds`. Cheap: no division.
+bool may_cover_pixels(const WindowVertex& vertex0, const WindowVertex& vertex1,
+                      const WindowVertex& vertex2, const PixelRect& bounds);
 
 }  // namespace weft::raster

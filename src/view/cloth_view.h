@@ -39,6 +39,7 @@ class ClothView {
     // Scratch for the frame renderer: the mesh transformed for the current frame, kept so
     // that drawing allocates nothing once the first frame is drawn.
     raster::PreparedMesh& prepared_mesh() { return prepared_mesh_; }
+    raster::TriangleBands& triangle_bands() { return triangle_bands_; }
 
     // Largest strain (|d|/L - 1) over all live springs at the last spring_colours() call.
     float largest_strain() const { return largest_strain_; }
@@ -58,6 +59,7 @@ class ClothView {
     std::size_t triangle_count_ = 0;
     float largest_strain_ = 0.0f;
     raster::PreparedMesh prepared_mesh_;
+    raster::TriangleBands triangle_bands_;
 };
 
 }  // namespace weft::view

@@ -17,10 +17,11 @@ struct Frame {
 };
 
 Frame draw(const Simulation& simulation, const FrameOptions& options, int width, int height,
-           WorkerPool* pool) {
+           WorkerPool* pool, const Scene* camera_scene = nullptr) {
     raster::Framebuffer framebuffer(width, height);
     ClothView view(simulation.cloth());
-    render_frame(framebuffer, scene_camera(simulation.scene()), simulation.cloth(), view, options,
+    render_frame(framebuffer, scene_camera(camera_scene ? *camera_scene : simulation.scene()),
+                 simulation.cloth(), view, options,
                  ground_height_below(simulation.cloth(), simulation.colliders()),
                  simulation.colliders(), pool);
     return {{framebuffer.colours().begin(), framebuffer.colours().end()},
@@ -50,6 +51,48 @@ TEST(FrameRenderer, BandsOnSeveralThreadsDrawTheSameImageAsOneThread) {
                     << threads << " threads, " << width << "x" << height;
             }
         }
+    }
+}
+
+// A sheet big enough for its triangles to be binned by several threads (4096 or more), seen
+// from a camera among its particles: triangles behind the camera, triangles crossing its
+// near plane (clipped, so binned into every band), and a cloth across most of the frame.
+TEST(FrameRenderer, ALargeSheetSeenFromInsideIsTheSameOnAnyThreadCount) {
+    SceneLoadResult loaded = load_scene_file(WEFT_SOURCE_DIR "/assets/scenes/hanging_sheet.toml",
+                                             {"cloth.rows=64", "cloth.cols=64"});
+    ASSERT_TRUE(loaded.ok());
+    Scene scene = *loaded.scene;
+    Simulation simulation(scene);
+    for (int s = 0; s < 300; ++s) simulation.step();
+    // Between the particles of the sheet's middle, looking along it towards a corner.
+    const Cloth& cloth = simulation.cloth();
+    const Vec3 middle = cloth.positions[32 * 64 + 32], corner = cloth.positions[63 * 64 + 63];
+    scene.camera.position = {middle.x, middle.y + 0.01, middle.z};
+    scene.camera.target = {corner.x, corner.y, corner.z};
+    ASSERT_GE(2 * 63 * 63, 4096);
+    const Frame one = draw(simulation, FrameOptions{}, 400, 300, nullptr, &scene);
+    ASSERT_GT(std::count_if(one.depths.begin(), one.depths.end(),
+                            [](float depth) { return depth < 1.0f; }),
+              400 * 300 / 8);
+    // Some of its triangles do cross the near plane.
+    ClothView view(cloth);
+    view.update(cloth);
+    raster::PreparedMesh prepared;
+    ASSERT_TRUE(raster::prepare_mesh(scene_camera(scene), 400, 300, view.mesh(),
+                                     FrameOptions::default_surface(), prepared));
+    const auto clipped = std::count_if(prepared.triangles.begin(), prepared.triangles.end(),
+                                       [&](const raster::TriangleIndices& t) {
+                                           return raster::TriangleOutcodes{prepared.outcodes[t[0]],
+                                                                           prepared.outcodes[t[1]],
+                                                                           prepared.outcodes[t[2]]}
+                                               .needs_clipping();
+                                       });
+    EXPECT_GT(clipped, 0);
+    for (int threads : {2, 3}) {
+        WorkerPool pool(threads);
+        const Frame banded = draw(simulation, FrameOptions{}, 400, 300, &pool, &scene);
+        EXPECT_TRUE(banded.colours == one.colours) << threads << " threads";
+        EXPECT_TRUE(banded.depths == one.depths) << threads << " threads";
     }
 }
 

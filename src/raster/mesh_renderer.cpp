@@ -10,6 +10,7 @@
 #include <glm/matrix.hpp>
 
 #include "raster/clipping.h"
+#include "raster/surface_shading.h"
 #include "raster/triangle_rasterizer.h"
 
 namespace weft::raster {
@@ -20,111 +21,90 @@ constexpr int position_slot = 0;
 constexpr int normal_slot = 3;
 constexpr int uv_slot = 6;
 
-// The lighting model with everything that is constant over a draw worked out once, so the
-// per-pixel work is a few dot products.
-struct PreparedLighting {
-    glm::vec3 to_light;  // unit length, or zero
-    glm::vec3 ambient;
-    glm::vec3 light;
-    glm::vec3 eye_fill;
-    float specular_strength;
-    float shininess;
-    int integer_shininess;  // >= 0 when shininess is a whole number: pow by squaring
-    // n·h below which the highlight stays under half an 8-bit step: pow is skipped there.
-    float specular_cutoff;
-};
-
-PreparedLighting prepare(const SurfaceStyle& style, const Lighting& lighting) {
-    PreparedLighting prepared;
-    const float light_length = glm::length(lighting.direction_to_light);
-    prepared.to_light = light_length > 0.0f && std::isfinite(light_length)
-                            ? lighting.direction_to_light / light_length
-                            : glm::vec3(0.0f);
-    prepared.ambient = lighting.ambient_colour;
-    prepared.light = lighting.light_colour;
-    prepared.eye_fill = lighting.eye_fill_colour;
-    prepared.shininess = std::max(style.shininess, 0.0f);
-    prepared.integer_shininess =
-        prepared.shininess <= 1024.0f && prepared.shininess == std::floor(prepared.shininess)
-            ? static_cast<int>(prepared.shininess)
-            : -1;
-    const float peak =
-        style.specular_strength *
-        std::max({lighting.light_colour.r, lighting.light_colour.g, lighting.light_colour.b});
-    prepared.specular_strength = peak > 0.0f ? style.specular_strength : 0.0f;
-    prepared.specular_cutoff =
-        peak > 0.0f && prepared.shininess > 0.0f
-            ? std::pow(std::min(0.5f / 255.0f / peak, 1.0f), 1.0f / prepared.shininess)
-            : 0.0f;
-    return prepared;
-}
-
-// x^n; the common whole-number exponents by squaring, a handful of multiplies instead of a
-// call to pow for most pixels.
-inline float power(float x, const PreparedLighting& lighting) {
-    int n = lighting.integer_shininess;
-    if (n < 0) return std::pow(x, lighting.shininess);
-    float result = 1.0f;
-    while (n > 0) {
-        if (n & 1) result *= x;
-        x *= x;
-        n >>= 1;
-    }
-    return result;
-}
-
-inline glm::vec3 shade(const PreparedLighting& lighting, const glm::vec3& base_colour,
-                       const glm::vec3& normal, const glm::vec3& to_eye, bool front_facing) {
-    const float normal_length_squared = glm::dot(normal, normal);
-    // A vanishing normal (a vertex of only degenerate triangles) is lit as if facing the eye.
-    glm::vec3 n = normal_length_squared > 1e-24f ? normal / std::sqrt(normal_length_squared)
-                                                 : (front_facing ? to_eye : -to_eye);
-    if (!front_facing) n = -n;  // two-sided: the back is lit through its own normal
-
-    const float lambert = std::max(glm::dot(n, lighting.to_light), 0.0f);
-    float specular = 0.0f;
-    if (lambert > 0.0f && lighting.specular_strength > 0.0f) {
-        const glm::vec3 halfway = lighting.to_light + to_eye;
-        const float halfway_length_squared = glm::dot(halfway, halfway);
-        if (halfway_length_squared > 0.0f) {
-            const float n_dot_h = glm::dot(n, halfway) / std::sqrt(halfway_length_squared);
-            if (n_dot_h > lighting.specular_cutoff) {
-                specular = lighting.specular_strength * power(n_dot_h, lighting);
-            }
-        }
-    }
-    const float fill = std::max(glm::dot(n, to_eye), 0.0f);
-    return base_colour * (lighting.ambient + lighting.light * lambert + lighting.eye_fill * fill) +
-           lighting.light * specular;
-}
-
-// The per-pixel shader of draw_mesh. Its layout is fixed at compile time, so the rasterizer
-// interpolates exactly the varyings it reads.
+// The shader of draw_mesh. Its layout is fixed at compile time, so the rasterizer
+// interpolates exactly the varyings it reads. It is deferred (triangle_rasterizer.h): covered
+// pixels are queued with their varyings and lit a batch at a time (surface_shading.h).
 template <bool HasUv, bool HasColour>
 struct SurfaceShader {
     static constexpr int colour_slot = HasUv ? uv_slot + 2 : uv_slot;
     static constexpr int varying_count = colour_slot + (HasColour ? 3 : 0);
+    static constexpr bool deferred = true;
+
+    // Pixels waiting for their colour: framebuffer index, varyings, side seen.
+    struct Queue {
+        int count = 0;
+        std::uint32_t pixel[ShadingLanes::capacity];
+        float varyings[varying_count][ShadingLanes::capacity];
+        float front[ShadingLanes::capacity];
+        ShadingLanes lanes;
+    };
 
     const SurfaceStyle* style;
     PreparedLighting lighting;
     glm::vec3 eye;
+    Rgba8* colours;
+    Queue* queue;
 
-    Rgba8 operator()(const Fragment& fragment) const {
-        const float* v = fragment.varyings;
-        const glm::vec3 position(v[position_slot], v[position_slot + 1], v[position_slot + 2]);
-        const glm::vec3 normal(v[normal_slot], v[normal_slot + 1], v[normal_slot + 2]);
-        glm::vec3 base;
-        if constexpr (HasColour) {
-            base = glm::vec3(v[colour_slot], v[colour_slot + 1], v[colour_slot + 2]);
-        } else {
-            base = fragment.front_facing ? style->front_colour : style->back_colour;
+    void defer(std::size_t pixel, const Fragment& fragment) const {
+        Queue& q = *queue;
+        q.pixel[q.count] = static_cast<std::uint32_t>(pixel);
+        for (int k = 0; k < varying_count; ++k) q.varyings[k][q.count] = fragment.varyings[k];
+        q.front[q.count] = fragment.front_facing ? 1.0f : 0.0f;
+        if (++q.count == ShadingLanes::capacity) flush();
+    }
+
+    // Lights the queued pixels and writes their colours, in the order they were queued: a
+    // pixel covered twice ends with the later fragment's colour, as if drawn at once.
+    void flush() const {
+        Queue& q = *queue;
+        ShadingLanes& lanes = q.lanes;
+        const int count = q.count;
+        const glm::vec3 front_colour = style->front_colour, back_colour = style->back_colour;
+        const SurfacePattern pattern = style->pattern;
+        const float frequency = style->pattern_frequency, contrast = style->pattern_contrast;
+        for (int i = 0; i < count; ++i) {
+            const bool seen_front = q.front[i] != 0.0f;
+            float r, g, b;
+            if constexpr (HasColour) {
+                r = q.varyings[colour_slot][i];
+                g = q.varyings[colour_slot + 1][i];
+                b = q.varyings[colour_slot + 2][i];
+            } else {
+                r = seen_front ? front_colour.r : back_colour.r;
+                g = seen_front ? front_colour.g : back_colour.g;
+                b = seen_front ? front_colour.b : back_colour.b;
+            }
+            if constexpr (HasUv) {
+                const float factor =
+                    pattern_lane(pattern, frequency, contrast, q.varyings[uv_slot][i],
+                                 q.varyings[uv_slot + 1][i]);
+                r *= factor;
+                g *= factor;
+                b *= factor;
+            }
+            lanes.base_r[i] = r;
+            lanes.base_g[i] = g;
+            lanes.base_b[i] = b;
+            lanes.normal_x[i] = q.varyings[normal_slot][i];
+            lanes.normal_y[i] = q.varyings[normal_slot + 1][i];
+            lanes.normal_z[i] = q.varyings[normal_slot + 2][i];
+            lanes.front[i] = q.front[i];
+            // The unit vector to the eye (zero at the eye itself).
+            const float tx = eye.x - q.varyings[position_slot][i];
+            const float ty = eye.y - q.varyings[position_slot + 1][i];
+            const float tz = eye.z - q.varyings[position_slot + 2][i];
+            const float distance_squared = tx * tx + ty * ty + tz * tz;
+            const float inverse_distance = 1.0f / std::sqrt(distance_squared);
+            const bool away = distance_squared > 0.0f;
+            lanes.eye_x[i] = away ? tx * inverse_distance : 0.0f;
+            lanes.eye_y[i] = away ? ty * inverse_distance : 0.0f;
+            lanes.eye_z[i] = away ? tz * inverse_distance : 0.0f;
         }
-        if constexpr (HasUv) base *= pattern_factor(*style, glm::vec2(v[uv_slot], v[uv_slot + 1]));
-        const glm::vec3 to_eye = eye - position;
-        const float distance_squared = glm::dot(to_eye, to_eye);
-        const glm::vec3 to_eye_unit =
-            distance_squared > 0.0f ? to_eye / std::sqrt(distance_squared) : glm::vec3(0.0f);
-        return to_rgba8(shade(lighting, base, normal, to_eye_unit, fragment.front_facing));
+        shade_lanes(lighting, lanes, count);
+        for (int i = 0; i < count; ++i)
+            colours[q.pixel[i]] = {to_channel(lanes.lit_r[i]), to_channel(lanes.lit_g[i]),
+                                   to_channel(lanes.lit_b[i]), 255};
+        q.count = 0;
     }
 };
 
@@ -180,7 +160,9 @@ void draw_prepared_with(Framebuffer& framebuffer, const PreparedMesh& prepared,
     const std::int64_t band_bottom = (std::int64_t{bounds.y_end} + 1) * subpixel_scale;
 
     // Cull, clip, rasterize, shade: triangle_rasterizer.h.
-    const Shader shader{&style, prepare(style, lighting), prepared.eye};
+    typename Shader::Queue queue;
+    const Shader shader{&style, prepare_lighting(style, lighting), prepared.eye,
+                        framebuffer.colours().data(), &queue};
     RasterState state;
     state.scissor = bounds;
     for_each_triangle([&](std::size_t index) {
@@ -197,6 +179,7 @@ void draw_prepared_with(Framebuffer& framebuffer, const PreparedMesh& prepared,
         draw_triangle(framebuffer, state, vertices[t[0]], vertices[t[1]], vertices[t[2]],
                       window[t[0]], window[t[1]], window[t[2]], codes, shader);
     });
+    shader.flush();
 }
 
 // The shader variant the prepared mesh needs, drawing the triangles `for_each_triangle`
@@ -252,28 +235,6 @@ void bin_triangle_run(const PreparedMesh& prepared, std::size_t begin, std::size
 }
 
 }  // namespace
-
-float pattern_factor(const SurfaceStyle& style, const glm::vec2& uv) {
-    if (style.pattern == SurfacePattern::none) return 1.0f;
-    // Cell indices by integer floor: std::floor on floats is a long instruction sequence on
-    // baseline x86-64 (no SSE4.1 round), and this runs for every pixel of the cloth.
-    auto cell = [](float coordinate) -> std::int64_t {
-        if (!(std::abs(coordinate) < 1e15f)) return 0;  // NaN or absurd: any cell will do
-        const auto truncated = static_cast<std::int64_t>(coordinate);
-        return truncated - (static_cast<float>(truncated) > coordinate ? 1 : 0);
-    };
-    const std::int64_t cell_u = cell(uv.x * style.pattern_frequency);
-    const std::int64_t cells = style.pattern == SurfacePattern::checker
-                                   ? cell_u + cell(uv.y * style.pattern_frequency)
-                                   : cell_u;
-    return (cells & 1) != 0 ? 1.0f - style.pattern_contrast : 1.0f;
-}
-
-glm::vec3 shade_surface(const SurfaceStyle& style, const Lighting& lighting,
-                        const glm::vec3& base_colour, const glm::vec3& normal,
-                        const glm::vec3& to_eye, bool front_facing) {
-    return shade(prepare(style, lighting), base_colour, normal, to_eye, front_facing);
-}
 
 bool prepare_mesh(const Camera& camera, int width, int height, const MeshView& mesh,
                   const SurfaceStyle& style, PreparedMesh& prepared, WorkerPool* pool) {

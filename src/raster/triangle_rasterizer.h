@@ -14,6 +14,10 @@
 //     Rgba8 shader(const Fragment& fragment)
 // A shader type may also declare `static constexpr int varying_count = N;`: then N replaces
 // RasterState::varying_count and the interpolation loop is unrolled at compile time.
+// A shader that declares `static constexpr bool deferred = true;` is instead called as
+//     shader.defer(std::size_t pixel_index, const Fragment& fragment)
+// for every fragment that passes the depth test (whose depth is already written), and
+// writes the colour itself later — in batches, in the order it was given the fragments.
 // Nothing here allocates; the framebuffer, scissor and state are passed in, never global.
 // Both windings are drawn (there is no back-face culling); Fragment::front_facing tells the
 // shader which side it sees.
@@ -61,6 +65,16 @@ constexpr int static_varying_count() {
     } else {
         return -1;
     }
+}
+
+// Whether the shader colours its pixels later, in batches (see above).
+template <class Shader>
+constexpr bool is_deferred() {
+    using Type = std::remove_cvref_t<Shader>;
+    if constexpr (requires { Type::deferred; })
+        return Type::deferred;
+    else
+        return false;
 }
 
 // Stages 4–6 for one set-up triangle.
@@ -164,8 +178,13 @@ void traverse_and_shade(Framebuffer& framebuffer, const RasterState& state,
             fragment.x = x;
             fragment.y = y;
             fragment.depth = depth;
-            colours[index] = shader(static_cast<const Fragment&>(fragment));
-            if (depth_write) depths[index] = depth;
+            if constexpr (is_deferred<Shader>()) {
+                if (depth_write) depths[index] = depth;
+                shader.defer(index, static_cast<const Fragment&>(fragment));
+            } else {
+                colours[index] = shader(static_cast<const Fragment&>(fragment));
+                if (depth_write) depths[index] = depth;
+            }
         }
     }
 }

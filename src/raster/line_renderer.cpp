@@ -109,15 +109,29 @@ void walk_line(Framebuffer& framebuffer, WindowPoint a, WindowPoint b, const Pix
     const int minor_begin = x_major ? scissor.y_begin : scissor.x_begin;
     const int minor_end = x_major ? scissor.y_end : scissor.x_end;
     // Pixel centres c + 0.5 in [start, end): c from ceil(start - 0.5) to ceil(end - 0.5) - 1.
-    const int first = std::max(major_begin, static_cast<int>(std::ceil(start - 0.5f)));
-    const int last = std::min(major_end, static_cast<int>(std::ceil(b.window[major] - 0.5f)));
+    int first = std::max(major_begin, static_cast<int>(std::ceil(start - 0.5f)));
+    int last = std::min(major_end, static_cast<int>(std::ceil(b.window[major] - 0.5f)));
+    const float minor_start = a.window[minor], minor_delta = b.window[minor] - a.window[minor];
+    // Only the stretch whose minor coordinate can fall inside the scissor is walked: a frame
+    // drawn in thin bands would otherwise walk every line's whole length in every band. The
+    // stretch is estimated in double with two pixels to spare on either side; which pixels
+    // are drawn is still decided pixel by pixel below, exactly as without it.
+    if (minor_delta != 0.0f) {
+        const double slope = static_cast<double>(length) / static_cast<double>(minor_delta);
+        const double at_begin =
+            start - 0.5 + (static_cast<double>(minor_begin) - minor_start) * slope;
+        const double at_end = start - 0.5 + (static_cast<double>(minor_end) - minor_start) * slope;
+        const double low = std::min(at_begin, at_end) - 2.0,
+                     high = std::max(at_begin, at_end) + 2.0;
+        if (low > static_cast<double>(first)) first = static_cast<int>(std::min(low, 1e9));
+        if (high < static_cast<double>(last)) last = static_cast<int>(std::max(high, -1e9));
+    }
 
     const std::size_t width = static_cast<std::size_t>(framebuffer.width());
     Rgba8* const colours = framebuffer.colours().data();
     float* const depths = framebuffer.depths().data();
     const bool depth_test = style.depth_test, depth_write = style.depth_write;
     const float inverse_length = 1.0f / length;
-    const float minor_start = a.window[minor], minor_delta = b.window[minor] - a.window[minor];
     const float depth_start = a.window.z, depth_delta = b.window.z - a.window.z;
     const Rgba8 flat_colour = to_rgba8(a.colour_over_w / a.inverse_w);
     for (int c = first; c < last; ++c) {

@@ -39,11 +39,16 @@ TriangleMesh make_uv_sphere(int slices, int stacks) {
     return mesh;
 }
 
+MeshView sphere_view(const TriangleMesh& unit_sphere, const glm::vec3& centre, float radius) {
+    const glm::mat4 model = glm::scale(glm::translate(glm::mat4(1.0f), centre), glm::vec3(radius));
+    return unit_sphere.view(model);
+}
+
 bool draw_sphere(Framebuffer& framebuffer, const Camera& camera, const TriangleMesh& unit_sphere,
                  const glm::vec3& centre, float radius, const SurfaceStyle& style,
                  const Lighting& lighting, const PixelRect& scissor) {
-    const glm::mat4 model = glm::scale(glm::translate(glm::mat4(1.0f), centre), glm::vec3(radius));
-    return draw_mesh(framebuffer, camera, unit_sphere.view(model), style, lighting, scissor);
+    return draw_mesh(framebuffer, camera, sphere_view(unit_sphere, centre, radius), style, lighting,
+                     scissor);
 }
 
 }  // namespace weft::raster

@@ -17,6 +17,10 @@ namespace weft::raster {
 // The seam and pole vertices are duplicated so u and v stay continuous per triangle.
 TriangleMesh make_uv_sphere(int slices = 32, int stacks = 16);
 
+// `unit_sphere` (from make_uv_sphere) scaled to `radius` and moved to `centre`, as a mesh to
+// draw or prepare (mesh_renderer.h); it refers to `unit_sphere`'s arrays.
+MeshView sphere_view(const TriangleMesh& unit_sphere, const glm::vec3& centre, float radius);
+
 // Draws `unit_sphere` (from make_uv_sphere) scaled to `radius` and moved to `centre`.
 bool draw_sphere(Framebuffer& framebuffer, const Camera& camera, const TriangleMesh& unit_sphere,
                  const glm::vec3& centre, float radius, const SurfaceStyle& style,

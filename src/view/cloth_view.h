@@ -40,6 +40,7 @@ class ClothView {
     // that drawing allocates nothing once the first frame is drawn.
     raster::PreparedMesh& prepared_mesh() { return prepared_mesh_; }
     raster::TriangleBands& triangle_bands() { return triangle_bands_; }
+    std::vector<raster::PreparedMesh>& collider_meshes() { return collider_meshes_; }
 
     // Largest strain (|d|/L - 1) over all live springs at the last spring_colours() call.
     float largest_strain() const { return largest_strain_; }
@@ -60,6 +61,7 @@ class ClothView {
     float largest_strain_ = 0.0f;
     raster::PreparedMesh prepared_mesh_;
     raster::TriangleBands triangle_bands_;
+    std::vector<raster::PreparedMesh> collider_meshes_;
 };
 
 }  // namespace weft::view

@@ -291,5 +291,64 @@ TEST(Sphere, SilhouetteMatchesTheAnalyticDiscAndNormalsPointOutwards) {
     EXPECT_EQ(coarse.triangles.size(), 8u * 4u * 2u - 2u * 8u);  // pole rows: one per cell
 }
 
+// A mesh drawn band by band from its binned triangles lands on exactly the pixels and depths
+// of one whole draw: for bands of several heights, binned on one thread and on two, with
+// triangles crossing the near plane (binned into every band) and triangles off screen.
+TEST(MeshRenderer, BandsOfBinnedTrianglesDrawWhatOneWholeDrawDraws) {
+    const TriangleMesh sphere = make_uv_sphere(96, 48);  // 9 000 triangles: binned in threads
+    const Camera camera = make_camera({0.3f, 0.2f, 3.0f}, {0.0f, 0.0f, 0.0f}, 60.0f);
+    SurfaceStyle style;
+    style.pattern = SurfacePattern::checker;
+    const Lighting lighting;
+    const int width = 203, height = 157;
+    // A wall 2 cm beside the eye, from behind the camera to far ahead: its triangles around
+    // the camera cut the near plane, and their visible parts cover much of the frame.
+    TriangleMesh wall;
+    const int cells = 20;
+    for (int j = 0; j <= cells; ++j) {
+        for (int i = 0; i <= cells; ++i) {
+            const float u = static_cast<float>(i) / cells, v = static_cast<float>(j) / cells;
+            wall.positions.push_back({0.32f, -2.0f + 4.0f * v, -5.0f + 10.0f * u});
+            wall.normals.push_back({-1.0f, 0.0f, 0.0f});
+            wall.uvs.push_back({u, v});
+        }
+    }
+    for (std::uint32_t j = 0; j < cells; ++j) {
+        for (std::uint32_t i = 0; i < cells; ++i) {
+            const std::uint32_t corner = j * (cells + 1) + i;
+            wall.triangles.push_back({corner, corner + 1, corner + cells + 1});
+            wall.triangles.push_back({corner + 1, corner + cells + 2, corner + cells + 1});
+        }
+    }
+    const MeshView views[] = {sphere_view(sphere, {0.2f, -0.1f, 0.0f}, 1.0f), wall.view()};
+    for (const MeshView& view : views) {
+        PreparedMesh prepared;
+        ASSERT_TRUE(prepare_mesh(camera, width, height, view, style, prepared));
+        Framebuffer whole(width, height);
+        whole.clear(Rgba8{10, 20, 30, 255});
+        draw_prepared_mesh(whole, prepared, style, lighting);
+        ASSERT_GT(std::count_if(whole.depths().begin(), whole.depths().end(),
+                                [](float depth) { return depth < 1.0f; }),
+                  width * height / 10);
+        for (int band_height : {1, 7, 32, 400}) {
+            for (int threads : {1, 2}) {
+                WorkerPool pool(threads);
+                TriangleBands bands;
+                bin_triangles(prepared, band_height, bands, &pool);
+                Framebuffer banded(width, height);
+                banded.clear(Rgba8{10, 20, 30, 255});
+                for (int band = bands.band_count - 1; band >= 0; --band)  // any order
+                    draw_prepared_band(banded, prepared, bands, band, style, lighting);
+                EXPECT_TRUE(std::equal(whole.colours().begin(), whole.colours().end(),
+                                       banded.colours().begin()))
+                    << band_height << " rows, " << threads << " threads";
+                EXPECT_TRUE(std::equal(whole.depths().begin(), whole.depths().end(),
+                                       banded.depths().begin()))
+                    << band_height << " rows, " << threads << " threads";
+            }
+        }
+    }
+}
+
 }  // namespace
 }  // namespace weft::raster

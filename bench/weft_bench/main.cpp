@@ -43,7 +43,8 @@ int usage(const char* problem) {
 
 int main(int argc, char** argv) {
     const std::vector<std::string> args(argv + 1, argv + argc);
-    if (args.empty()) return usage("which study? precision, invariants, stability, throughput or replay");
+    if (args.empty())
+        return usage("which study? precision, invariants, stability, throughput or replay");
     const std::string study = args[0];
     std::vector<std::string> scenes, overrides, sweeps;
     std::string out_dir = "bench-out";
@@ -73,7 +74,8 @@ int main(int argc, char** argv) {
             for (std::size_t at = 0; at <= list.size();) {
                 const std::size_t comma = std::min(list.find(',', at), list.size());
                 std::string why;
-                const auto side = weft::bench::parse_integer(list.substr(at, comma - at), 3, 4096, why);
+                const auto side =
+                    weft::bench::parse_integer(list.substr(at, comma - at), 3, 4096, why);
                 if (!side) return usage(("--sizes: " + why).c_str());
                 sizes.push_back(static_cast<int>(*side));
                 at = comma + 1;
@@ -109,6 +111,7 @@ int main(int argc, char** argv) {
         const std::string scene = scenes.empty() ? scenes_dir + "/hanging_sheet.toml" : scenes[0];
         weft::bench::ThroughputOptions options{scene, overrides, out_dir};
         if (!sizes.empty()) options.sizes = sizes;
+        options.demo_scene = scenes_dir + "/large_sheet.toml";
         return weft::bench::run_throughput_study(options);
     }
     if (study == "replay") {

@@ -114,6 +114,63 @@ double triad_bandwidth() {
     return best;
 }
 
+// The demo's 128² sheet as the demo shows it: large_sheet.toml stepped 2 s with its own
+// integrator and dt (hanging from its pins, across a good part of the screen), drawn shaded
+// at 1280x720 through its camera; and whether a demo frame — the steps of 1/60 s and that
+// drawing — fits in 1/60 s.
+void measure_demo_view(const std::string& path, CsvFile& csv) {
+    std::string error;
+    const auto scene = load_study_scene(path, {}, error);
+    if (!scene) {
+        std::fprintf(stderr, "%s\n", error.c_str());
+        return;
+    }
+    Simulation simulation(*scene);
+    const double dt = scene->solver.dt;
+    if (!run_steps(simulation, static_cast<long long>(std::ceil(2.0 / dt)))) {
+        std::printf("\n%s diverged within 2 s: not drawn\n", path.c_str());
+        return;
+    }
+    const Cloth& cloth = simulation.cloth();
+    WorkerPool pool(default_thread_count());
+    raster::Framebuffer framebuffer(1280, 720);
+    view::ClothView cloth_view(cloth);
+    const view::FrameOptions frame;
+    const float ground = view::ground_height_below(cloth, simulation.colliders());
+    const Interleaved seconds = interleaved_seconds(
+        {[&] {
+             view::render_frame(framebuffer, view::scene_camera(*scene), cloth, cloth_view, frame,
+                                ground, simulation.colliders(), &pool);
+         },
+         [&] {
+             view::render_frame(framebuffer, view::scene_camera(*scene), cloth, cloth_view, frame,
+                                ground, simulation.colliders());
+         }},
+        9);
+    long long covered = 0;
+    for (float depth : framebuffer.depths()) covered += depth < 1.0f ? 1 : 0;
+    Simulation stepping = simulation;
+    const double step_seconds = seconds_per_call([&] { stepping.step(); });
+    const double frame_seconds =
+        std::ceil((1.0 / 60.0) / dt - 1e-9) * step_seconds + seconds.seconds[0];
+    std::printf(
+        "\n%s (%zu particles) after 2 s, as the demo shows it (%.0f %% of the pixels):\n"
+        "  render 1280x720 shaded                %.2f ms on %d threads, %.2f ms on 1\n"
+        "  demo frame at 60 fps (%s at dt %.3g s, %.0f steps of %.1f us, and the drawing): "
+        "%.1f ms -> %s\n",
+        path.c_str(), cloth.particle_count(),
+        100.0 * static_cast<double>(covered) / (1280.0 * 720.0), seconds.seconds[0] * 1e3,
+        pool.thread_count(), seconds.seconds[1] * 1e3, integrator_name(scene->solver.integrator),
+        dt, std::ceil((1.0 / 60.0) / dt - 1e-9), step_seconds * 1e6, frame_seconds * 1e3,
+        frame_seconds <= 1.0 / 60.0 ? "real time" : "slower than real time");
+    const std::string particles = cell(static_cast<double>(cloth.particle_count()));
+    csv.write_row({"demo", particles, "", "render 1280x720 shaded, demo view", "",
+                   cell(seconds.seconds[0]), "", "", "1 thread " + cell(seconds.seconds[1])});
+    csv.write_row({"demo", particles, "", "demo_frame_at_60fps",
+                   integrator_name(scene->solver.integrator), cell(frame_seconds), "", "",
+                   "step " + cell(step_seconds) + " s at dt " + cell(dt)});
+}
+
 }  // namespace
 
 int run_throughput_study(const ThroughputOptions& options) {
@@ -215,9 +272,24 @@ int run_throughput_study(const ThroughputOptions& options) {
         weft_run.set_integrator(Integrator::symplectic_euler);
         weft_single.set_integrator(Integrator::symplectic_euler);
         weft_single.set_thread_count(1);
+        // And two ablations of weft's step, so the gain of each is measured: the force pass
+        // and the step run separately (no fusion), and the AVX2 build of the kernel where
+        // the CPU would take AVX-512.
+        Simulation weft_separate = weft_run, weft_avx2 = weft_run;
+        const SimdLevel best_level = simd_level();
         const Interleaved versus =
             interleaved_seconds({[&] { weft_run.step(); }, [&] { weft_single.step(); },
-                                 [&] { plain.step_symplectic_euler(sound_dt); }});
+                                 [&] { plain.step_symplectic_euler(sound_dt); },
+                                 [&] {
+                                     set_fused_grid_steps(false);
+                                     weft_separate.step();
+                                     set_fused_grid_steps(true);
+                                 },
+                                 [&] {
+                                     set_simd_level(std::min(best_level, SimdLevel::avx2));
+                                     weft_avx2.step();
+                                     set_simd_level(best_level);
+                                 }});
         const double weft_seconds = versus.seconds[0], weft_single_seconds = versus.seconds[1];
         const double plain_seconds = versus.seconds[2];
         const double speed_up = versus.ratio_to_first[2];
@@ -228,6 +300,18 @@ int run_throughput_study(const ThroughputOptions& options) {
             "%.1f us on 1 thread (%.2fx)\n",
             plain_seconds * 1e6, weft_seconds * 1e6, weft_run.thread_count(), speed_up,
             weft_single_seconds * 1e6, speed_up_single);
+        std::printf(
+            "  weft's step without the fused pass: %.1f us (%.2fx the fused); with the %s "
+            "kernel: %.1f us (%.2fx)\n",
+            versus.seconds[3] * 1e6, versus.ratio_to_first[3],
+            simd_level_name(std::min(best_level, SimdLevel::avx2)), versus.seconds[4] * 1e6,
+            versus.ratio_to_first[4]);
+        csv.write_row({std::to_string(n), cell(particles), cell(springs), "step_separate_pass",
+                       "symplectic-euler", cell(versus.seconds[3]), "", "",
+                       "ratio to fused " + cell(versus.ratio_to_first[3])});
+        csv.write_row({std::to_string(n), cell(particles), cell(springs), "step_avx2_kernel",
+                       "symplectic-euler", cell(versus.seconds[4]), "", "",
+                       "ratio to best kernel " + cell(versus.ratio_to_first[4])});
         csv.write_row({std::to_string(n), cell(particles), cell(springs), "step", "plain-baseline",
                        cell(plain_seconds), "", cell(particles / plain_seconds),
                        "weft symplectic-euler speed-up " + cell(speed_up)});
@@ -321,6 +405,7 @@ int run_throughput_study(const ThroughputOptions& options) {
         "its sound dt\n",
         largest_real_time_at_1ms, largest_real_time_at_1ms, largest_real_time_sound,
         largest_real_time_sound);
+    if (!options.demo_scene.empty() && !stop_requested) measure_demo_view(options.demo_scene, csv);
     plot.series = series;
     const std::string path = options.out_dir + "/throughput.png";
     if (!write_plot_png(plot, path, &error))

@@ -9,10 +9,12 @@
 namespace weft::bench {
 
 struct ThroughputOptions {
-    std::string scene;                   // the material; resized to each sheet
+    std::string scene;  // the material; resized to each sheet
     std::vector<std::string> overrides;
     std::string out_dir = ".";
     std::vector<int> sizes = {32, 64, 128, 256};  // particles per side
+    // The demo's own 128² scene, drawn as the demo shows it (empty: not measured).
+    std::string demo_scene;
 };
 
 int run_throughput_study(const ThroughputOptions& options);

@@ -1,6 +1,6 @@
 // The row kernel of the structured force pass, as plain data in and plain data out, so it
-// can be compiled twice — for baseline x86-64 and for AVX2 — and picked at run time
-// (grid_force_pass.cpp). Nothing here knows Cloth or glm: the two builds must not share any
+// can be compiled three times — for baseline x86-64, AVX2 and AVX-512 — and picked at run
+// time (grid_force_pass.cpp). Nothing here knows Cloth or glm: the builds must not share any
 // inline function, or the linker could hand the baseline build the AVX2 copy.
 #pragma once
 

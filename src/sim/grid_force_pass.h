@@ -3,8 +3,8 @@
 // per-component arrays so the loops vectorise, and split between threads by rows.
 //
 // It agrees with the general pass to rounding (only the order of each particle's sum
-// differs: tested), and is bit-identical for any number of threads and for both builds of
-// its kernel (baseline x86-64 and AVX2: no fused multiply-add, IEEE operations only).
+// differs: tested), and is bit-identical for any number of threads and for every build of
+// its kernel (baseline x86-64, AVX2, AVX-512: no fused multiply-add, IEEE operations only).
 #pragma once
 
 #include <optional>

@@ -36,8 +36,9 @@ class ClothView {
     std::span<const raster::LineIndices> spring_lines() const { return spring_lines_; }
     std::span<const raster::Rgba8> spring_colours(const Cloth& cloth);
 
-    // Scratch for the frame renderer: the mesh transformed for the current frame, kept so
-    // that drawing allocates nothing once the first frame is drawn.
+    // Scratch for the frame renderer: the mesh transformed for the current frame, its
+    // triangles binned by band, and the spheres transformed, kept so that drawing allocates
+    // nothing once the first frame is drawn.
     raster::PreparedMesh& prepared_mesh() { return prepared_mesh_; }
     raster::TriangleBands& triangle_bands() { return triangle_bands_; }
     std::vector<raster::PreparedMesh>& collider_meshes() { return collider_meshes_; }

@@ -34,10 +34,10 @@ raster::Camera scene_camera(const Scene& scene);
 float ground_height_below(const Cloth& cloth, std::span<const Collider> colliders = {});
 
 // Draws the frame; spheres among `colliders` are drawn as shaded balls (planes show as the
-// ground grid). With a pool of several threads the framebuffer is cut into horizontal bands,
-// interleaved between the threads, each band drawn whole (clear, ground, cloth, colliders)
-// inside its own scissor, then the lines and points over the whole frame: the image is the
-// same, pixel for pixel, as on one thread.
+// ground grid). The framebuffer is drawn in bands of 32 rows, each whole (clear, grids,
+// spheres, the cloth's triangles binned to it) by one thread — with a pool of several, the
+// threads claim bands in turn — then the lines and points over the whole frame: the image
+// is the same, pixel for pixel, whatever the number of threads.
 void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera,
                   const Cloth& cloth, ClothView& view, const FrameOptions& options,
                   float ground_height, std::span<const Collider> colliders = {},

@@ -114,6 +114,23 @@ double triad_bandwidth() {
     return best;
 }
 
+// Seconds per frame of one frame drawn on the pool's threads ([0]) and on one ([1]),
+// interleaved over `rounds` rounds.
+Interleaved frame_seconds(raster::Framebuffer& framebuffer, const raster::Camera& camera,
+                          const Cloth& cloth, std::span<const Collider> colliders,
+                          view::ClothView& cloth_view, const view::FrameOptions& frame,
+                          float ground, WorkerPool& pool, int rounds) {
+    return interleaved_seconds({[&] {
+                                    view::render_frame(framebuffer, camera, cloth, cloth_view,
+                                                       frame, ground, colliders, &pool);
+                                },
+                                [&] {
+                                    view::render_frame(framebuffer, camera, cloth, cloth_view,
+                                                       frame, ground, colliders);
+                                }},
+                               rounds);
+}
+
 // The demo's 128² sheet as the demo shows it: large_sheet.toml stepped 2 s with its own
 // integrator and dt (hanging from its pins, across a good part of the screen), drawn shaded
 // at 1280x720 through its camera; and whether a demo frame — the steps of 1/60 s and that
@@ -137,16 +154,9 @@ void measure_demo_view(const std::string& path, CsvFile& csv) {
     view::ClothView cloth_view(cloth);
     const view::FrameOptions frame;
     const float ground = view::ground_height_below(cloth, simulation.colliders());
-    const Interleaved seconds = interleaved_seconds(
-        {[&] {
-             view::render_frame(framebuffer, view::scene_camera(*scene), cloth, cloth_view, frame,
-                                ground, simulation.colliders(), &pool);
-         },
-         [&] {
-             view::render_frame(framebuffer, view::scene_camera(*scene), cloth, cloth_view, frame,
-                                ground, simulation.colliders());
-         }},
-        9);
+    const Interleaved seconds =
+        frame_seconds(framebuffer, view::scene_camera(*scene), cloth, simulation.colliders(),
+                      cloth_view, frame, ground, pool, 9);
     long long covered = 0;
     for (float depth : framebuffer.depths()) covered += depth < 1.0f ? 1 : 0;
     Simulation stepping = simulation;
@@ -358,16 +368,9 @@ int run_throughput_study(const ThroughputOptions& options) {
                 view::FrameOptions frame;
                 frame.wireframe = wireframe;
                 // On the machine's threads (bands) and on one, interleaved.
-                const Interleaved seconds = interleaved_seconds(
-                    {[&] {
-                         view::render_frame(framebuffer, view::scene_camera(scene), shaped.cloth(),
-                                            cloth_view, frame, -1.0f, {}, &pool);
-                     },
-                     [&] {
-                         view::render_frame(framebuffer, view::scene_camera(scene), shaped.cloth(),
-                                            cloth_view, frame, -1.0f);
-                     }},
-                    5);
+                const Interleaved seconds =
+                    frame_seconds(framebuffer, view::scene_camera(scene), shaped.cloth(), {},
+                                  cloth_view, frame, -1.0f, pool, 5);
                 if (width == 1280 && !wireframe) render_720p = seconds.seconds[0];
                 const std::string what = std::to_string(width) + "x" + std::to_string(height) +
                                          (wireframe ? " shaded+wireframe" : " shaded");

@@ -75,6 +75,23 @@ bool use_threads(const Cloth& cloth, WorkerPool* pool) {
     return pool && pool->thread_count() > 1 && cloth.particle_count() >= min_particles_for_threads;
 }
 
+// The row kernel over all rows of `job`, split between the pool's threads when the cloth is
+// big enough; what the fused sweep found in any band (nothing unless the job asks for it).
+grid_kernel::SweepFlags run_force_rows(const Cloth& cloth, const grid_kernel::Job& job,
+                                       WorkerPool* pool) {
+    const auto kernel = kernel_of(grid_kernel::force_rows_baseline, grid_kernel::force_rows_avx2,
+                                  grid_kernel::force_rows_avx512);
+    if (!use_threads(cloth, pool)) return kernel(job, 0, job.rows, thread_scratch(job.cols));
+    std::atomic<bool> non_finite{false}, moved{false};
+    pool->parallel_for(static_cast<std::size_t>(job.rows), [&](std::size_t begin, std::size_t end) {
+        const grid_kernel::SweepFlags band =
+            kernel(job, static_cast<int>(begin), static_cast<int>(end), thread_scratch(job.cols));
+        if (band.non_finite) non_finite.store(true, std::memory_order_relaxed);
+        if (band.moved) moved.store(true, std::memory_order_relaxed);
+    });
+    return {non_finite.load(), moved.load()};
+}
+
 }  // namespace
 
 SimdLevel supported_simd_level() {
@@ -105,15 +122,7 @@ bool accumulate_grid_forces(const Cloth& cloth, const ForceField& field,
     job.velocities = &velocities.data()->x;
     job.forces = &forces.data()->x;
     describe_field(field, job);
-    const auto kernel = kernel_of(grid_kernel::force_rows_baseline, grid_kernel::force_rows_avx2,
-                                  grid_kernel::force_rows_avx512);
-    if (!use_threads(cloth, pool)) {
-        kernel(job, 0, job.rows, thread_scratch(job.cols));
-        return true;
-    }
-    pool->parallel_for(static_cast<std::size_t>(job.rows), [&](std::size_t begin, std::size_t end) {
-        kernel(job, static_cast<int>(begin), static_cast<int>(end), thread_scratch(job.cols));
-    });
+    run_force_rows(cloth, job, pool);
     return true;
 }
 
@@ -146,22 +155,7 @@ bool step_grid_symplectic_euler(Cloth& cloth, const ForceField& field, double dt
         job.reference_positions = &sweep->reference_positions->x;
         job.moved_limit_squared = sweep->limit_squared;
     }
-    const auto kernel = kernel_of(grid_kernel::force_rows_baseline, grid_kernel::force_rows_avx2,
-                                  grid_kernel::force_rows_avx512);
-    grid_kernel::SweepFlags flags;
-    if (!use_threads(cloth, pool)) {
-        flags = kernel(job, 0, job.rows, thread_scratch(job.cols));
-    } else {
-        std::atomic<bool> non_finite{false}, moved{false};
-        pool->parallel_for(
-            static_cast<std::size_t>(job.rows), [&](std::size_t begin, std::size_t end) {
-                const grid_kernel::SweepFlags band = kernel(
-                    job, static_cast<int>(begin), static_cast<int>(end), thread_scratch(job.cols));
-                if (band.non_finite) non_finite.store(true, std::memory_order_relaxed);
-                if (band.moved) moved.store(true, std::memory_order_relaxed);
-            });
-        flags = {non_finite.load(), moved.load()};
-    }
+    const grid_kernel::SweepFlags flags = run_force_rows(cloth, job, pool);
     cloth.positions.swap(next_positions);
     cloth.velocities.swap(next_velocities);
     if (sweep && sweep_result) *sweep_result = {flags.non_finite, flags.moved};

@@ -47,14 +47,15 @@ TEST(Determinism, RepeatedRunsGiveTheSameStateBitForBit) {
     }
 }
 
-TEST(Determinism, OneTwoAndFourThreadsGiveTheSameStateBitForBit) {
-    // The tearing sheet is 24x24: its colours are below the threshold for splitting, so use
-    // a sheet big enough that every colour is split between the threads.
+// A 96x96 sheet with all spring families in a wind strong enough to tear it, stepped at
+// 0.2 ms: big enough that the force pass and every spring colour are split between threads.
+Scene large_tearing_sheet(Layout layout, Integrator integrator) {
     Scene scene;
     scene.cloth.rows = 96;
     scene.cloth.cols = 96;
     scene.cloth.spacing = 0.012;
     scene.cloth.particle_mass = 0.0006;
+    scene.cloth.layout = layout;
     scene.shear.enabled = true;
     scene.bend.enabled = true;
     scene.structural.damping = scene.shear.damping = 0.03;
@@ -62,7 +63,14 @@ TEST(Determinism, OneTwoAndFourThreadsGiveTheSameStateBitForBit) {
     scene.forces.wind = {3.0, 0.0, 4.0};
     scene.forces.air_drag = 0.001;
     scene.tear_max_stretch = 1.15;
-    scene.solver.dt = 2e-4;
+    scene.solver = {integrator, 2e-4};
+    return scene;
+}
+
+TEST(Determinism, OneTwoAndFourThreadsGiveTheSameStateBitForBit) {
+    // The tearing sheet is 24x24: its colours are below the threshold for splitting, so use
+    // a sheet big enough that every colour is split between the threads.
+    const Scene scene = large_tearing_sheet(Layout::grid, Integrator::symplectic_euler);
     std::uint64_t reference = 0;
     std::size_t torn = 0;
     for (int threads : {1, 2, 4}) {
@@ -82,25 +90,11 @@ TEST(Determinism, OneTwoAndFourThreadsGiveTheSameStateBitForBit) {
     EXPECT_GT(torn, 0u);  // tearing (and the recolouring after it) is part of the run
 }
 
-// The 96x96 tearing sheet above (structured force pass), or its offset-layout twin (general
-// pass), run for 400 steps with `threads` threads; 0 if it diverged.
+// The large tearing sheet (structured force pass), or its offset-layout twin (general pass),
+// run for 400 steps with `threads` threads; 0 if it diverged.
 std::uint64_t large_sheet_hash(int threads, Layout layout = Layout::grid,
                                Integrator integrator = Integrator::symplectic_euler) {
-    Scene scene;
-    scene.cloth.rows = 96;
-    scene.cloth.cols = 96;
-    scene.cloth.spacing = 0.012;
-    scene.cloth.particle_mass = 0.0006;
-    scene.cloth.layout = layout;
-    scene.shear.enabled = true;
-    scene.bend.enabled = true;
-    scene.structural.damping = scene.shear.damping = 0.03;
-    scene.bend.damping = 0.006;
-    scene.forces.wind = {3.0, 0.0, 4.0};
-    scene.forces.air_drag = 0.001;
-    scene.tear_max_stretch = 1.15;
-    scene.solver = {integrator, 2e-4};
-    Simulation simulation(scene);
+    Simulation simulation(large_tearing_sheet(layout, integrator));
     simulation.set_thread_count(threads);
     for (int s = 0; s < 400; ++s)
         if (simulation.step().diverged()) return 0;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -34,17 +35,22 @@ void Framebuffer::resize(int width, int height) {
 }
 
 void Framebuffer::clear(Rgba8 colour, float depth) {
-    std::fill(colours_.begin(), colours_.end(), colour);
-    std::fill(depths_.begin(), depths_.end(), depth);
+    clear(colour, depth, bounds());
 }
 
 void Framebuffer::clear(Rgba8 colour, float depth, const PixelRect& rect) {
     const PixelRect inside = rect.intersect(bounds());
     if (inside.empty()) return;
+    // Colours are filled one row and copied to the others: a fill of four-byte structs
+    // compiles to one store per pixel, which took two thirds of a 1280-wide band's clear;
+    // memcpy moves whole vectors.
+    const auto width = static_cast<std::size_t>(inside.width());
+    Rgba8* const first_row = colours_.data() + index(inside.x_begin, inside.y_begin);
+    std::fill_n(first_row, width, colour);
     for (int y = inside.y_begin; y < inside.y_end; ++y) {
         const std::size_t first = index(inside.x_begin, y);
-        const auto width = static_cast<std::size_t>(inside.width());
-        std::fill_n(colours_.begin() + static_cast<std::ptrdiff_t>(first), width, colour);
+        if (y > inside.y_begin)
+            std::memcpy(colours_.data() + first, first_row, width * sizeof(Rgba8));
         std::fill_n(depths_.begin() + static_cast<std::ptrdiff_t>(first), width, depth);
     }
 }

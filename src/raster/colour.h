@@ -19,9 +19,11 @@ struct Rgba8 {
 };
 
 // Rounds a channel in [0, 1] to [0, 255]; values outside are clamped, NaN becomes 0.
+// Written as selections, with no branch, so that a loop of it over many pixels vectorises
+// (a NaN fails `value > 0`).
 inline std::uint8_t to_channel(float value) {
-    const float clamped = std::clamp(value, 0.0f, 1.0f);  // std::clamp passes NaN through...
-    return static_cast<std::uint8_t>(clamped == clamped ? clamped * 255.0f + 0.5f : 0.0f);
+    const float clamped = value > 0.0f ? (value < 1.0f ? value : 1.0f) : 0.0f;
+    return static_cast<std::uint8_t>(static_cast<int>(clamped * 255.0f + 0.5f));
 }
 
 inline Rgba8 to_rgba8(const glm::vec3& rgb, float alpha = 1.0f) {

@@ -29,6 +29,7 @@ struct SurfaceShader {
     static constexpr int colour_slot = HasUv ? uv_slot + 2 : uv_slot;
     static constexpr int varying_count = colour_slot + (HasColour ? 3 : 0);
     static constexpr bool deferred = true;
+    static constexpr bool takes_fragment_blocks = true;
 
     // Pixels waiting for their colour: framebuffer index, varyings, side seen.
     struct Queue {
@@ -51,6 +52,23 @@ struct SurfaceShader {
         for (int k = 0; k < varying_count; ++k) q.varyings[k][q.count] = fragment.varyings[k];
         q.front[q.count] = fragment.front_facing ? 1.0f : 0.0f;
         if (++q.count == ShadingLanes::capacity) flush();
+    }
+
+    // Room for a block of fragments (fragment_block.h) at the end of the queue.
+    FragmentSink sink() const {
+        Queue& q = *queue;
+        if (q.count > ShadingLanes::capacity - fragment_block_size) flush();
+        FragmentSink sink{q.pixel + q.count, {}};
+        for (int k = 0; k < varying_count; ++k) sink.varyings[k] = q.varyings[k] + q.count;
+        return sink;
+    }
+
+    void commit(int count, bool front_facing) const {
+        Queue& q = *queue;
+        const float front = front_facing ? 1.0f : 0.0f;
+        for (int i = 0; i < count; ++i) q.front[q.count + i] = front;
+        q.count += count;
+        if (q.count == ShadingLanes::capacity) flush();  // defer() needs a free slot
     }
 
     // Lights the queued pixels and writes their colours, in the order they were queued: a
@@ -101,9 +119,15 @@ struct SurfaceShader {
             lanes.eye_z[i] = away ? tz * inverse_distance : 0.0f;
         }
         shade_lanes(lighting, lanes, count);
-        for (int i = 0; i < count; ++i)
-            colours[q.pixel[i]] = {to_channel(lanes.lit_r[i]), to_channel(lanes.lit_g[i]),
-                                   to_channel(lanes.lit_b[i]), 255};
+        // Rounded to 8 bits over the whole batch (a loop that vectorises), then written.
+        std::uint8_t red[ShadingLanes::capacity], green[ShadingLanes::capacity],
+            blue[ShadingLanes::capacity];
+        for (int i = 0; i < count; ++i) {
+            red[i] = to_channel(lanes.lit_r[i]);
+            green[i] = to_channel(lanes.lit_g[i]);
+            blue[i] = to_channel(lanes.lit_b[i]);
+        }
+        for (int i = 0; i < count; ++i) colours[q.pixel[i]] = {red[i], green[i], blue[i], 255};
         q.count = 0;
     }
 };

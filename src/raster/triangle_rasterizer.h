@@ -18,6 +18,11 @@
 //     shader.defer(std::size_t pixel_index, const Fragment& fragment)
 // for every fragment that passes the depth test (whose depth is already written), and
 // writes the colour itself later — in batches, in the order it was given the fragments.
+// A deferred shader that also declares `static constexpr bool takes_fragment_blocks = true;`
+// takes the fragments of small triangles sixteen at a time (fragment_block.h) through
+//     FragmentSink sink()                        room for fragment_block_size more
+//     void commit(int count, bool front_facing)  the first `count` of them are filled in
+// and gets exactly the fragments, in exactly the order, that defer() would have been given.
 // Nothing here allocates; the framebuffer, scissor and state are passed in, never global.
 // Both windings are drawn (there is no back-face culling); Fragment::front_facing tells the
 // shader which side it sees.
@@ -33,6 +38,7 @@
 
 #include "raster/clipping.h"
 #include "raster/colour.h"
+#include "raster/fragment_block.h"
 #include "raster/framebuffer.h"
 #include "raster/pixel_rect.h"
 #include "raster/triangle_setup.h"
@@ -77,6 +83,16 @@ constexpr bool is_deferred() {
         return false;
 }
 
+// Whether the shader takes small triangles' fragments in blocks (see above).
+template <class Shader>
+constexpr bool takes_fragment_blocks() {
+    using Type = std::remove_cvref_t<Shader>;
+    if constexpr (requires { Type::takes_fragment_blocks; })
+        return Type::takes_fragment_blocks;
+    else
+        return false;
+}
+
 // Stages 4–6 for one set-up triangle.
 //
 // Everything the loop reads is copied into locals first: colour stores go through unsigned
@@ -115,6 +131,24 @@ void traverse_and_shade(Framebuffer& framebuffer, const RasterState& state,
             varying_over_w[i][k] = vertex[i]->varyings[k] * setup.inverse_w[i];
         }
     }
+    if constexpr (takes_fragment_blocks<Shader>()) {
+        if (fragment_blocks_enabled() && fits_fragment_block(setup)) {
+            const BlockTriangle triangle{
+                &setup,
+                {varying_over_w[0].data(), varying_over_w[1].data(), varying_over_w[2].data()},
+                varying_count,
+                depths,
+                static_cast<std::uint32_t>(width),
+                depth_test,
+                depth_write};
+            for (int y = setup.y_begin; y < setup.y_end; y += fragment_block_rows) {
+                const FragmentSink sink = shader.sink();
+                shader.commit(traverse_fragment_block(triangle, y, sink), setup.front_facing);
+            }
+            return;
+        }
+    }
+
     std::array<float, max_varyings> varyings;  // the first varying_count are set per pixel
     Fragment fragment;
     fragment.front_facing = setup.front_facing;

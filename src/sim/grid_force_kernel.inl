@@ -309,7 +309,7 @@ void sweep_particles(const double* __restrict x, const double* __restrict refere
         // exact scan then decides).
         const double velocity_check =
             (v[3 * p] - v[3 * p]) + (v[3 * p + 1] - v[3 * p + 1]) + (v[3 * p + 2] - v[3 * p + 2]);
-        bad |= (moved_squared - moved_squared == 0.0) & (velocity_check == 0.0) ? 0u : 1u;
+        bad |= ((moved_squared - moved_squared == 0.0) & (velocity_check == 0.0)) ? 0u : 1u;
         far |= moved_squared >= limit_squared ? 1u : 0u;
     }
     non_finite = bad != 0;

@@ -1,0 +1,80 @@
+// Small triangles, sixteen pixels at a time.
+//
+// A 128² cloth across a tenth of a 1280×720 screen is 34 000 triangles of about three pixels
+// each: its pixel loop is almost all per-triangle and per-row overhead, and the branches of
+// a scalar walk over a 3×3 box (inside this edge? this row? passes the depth test?) go one way
+// or the other at random, so the processor mispredicts several per triangle. A triangle whose
+// box is at most four pixels wide is instead taken four rows at a time as one block of 4×4
+// lanes: coverage, depth, the depth test and the perspective-correct varyings are computed
+// for all sixteen lanes at once, and the fragments that pass are packed into the deferred
+// shader's queue (triangle_rasterizer.h) with no branch per pixel.
+//
+// Every lane computes exactly what the scalar pixel loop computes — the same integer edge
+// functions, the same float operations in the same order, no fused multiply-add — and the
+// fragments come out in the scalar loop's order (row by row, left to right), so a frame is
+// the same to the byte whichever path drew it (tested).
+//
+// The block needs AVX-512 (its mask registers and compress). Elsewhere, or when turned off,
+// the scalar loop draws every triangle.
+#pragma once
+
+#include <cstdint>
+
+#include "raster/clipping.h"
+#include "raster/triangle_setup.h"
+
+namespace weft::raster {
+
+inline constexpr int fragment_block_columns = 4;
+inline constexpr int fragment_block_rows = 4;
+inline constexpr int fragment_block_size = fragment_block_columns * fragment_block_rows;
+
+// Where a block's fragments go: room for fragment_block_size of each, in queue order.
+// Lanes past the count returned are written too, with values of no meaning.
+struct FragmentSink {
+    std::uint32_t* pixels;          // framebuffer index (y · width + x)
+    float* varyings[max_varyings];  // varying k of the fragments, one array per varying
+};
+
+// A set-up triangle and what the block reads of the frame, prepared once per triangle.
+struct BlockTriangle {
+    const TriangleSetup* setup;
+    // Varying k of setup vertex i divided by its w (the rasterizer's varying_over_w).
+    const float* varying_over_w[3];
+    int varying_count;
+    float* depths;        // the framebuffer's depth buffer
+    std::uint32_t width;  // the framebuffer's width, pixels
+    bool depth_test;
+    bool depth_write;
+};
+
+// Whether the block can draw this triangle: its box at most fragment_block_columns wide,
+// and every edge function over the block's lanes small enough for 32-bit integers.
+inline bool fits_fragment_block(const TriangleSetup& setup) {
+    if (setup.x_end - setup.x_begin > fragment_block_columns) return false;
+    // |E| ≤ |origin| + 3·|step_x| + (rows − 1)·|step_y| over a block of rows from y_begin,
+    // where rows ≤ 16 keeps the sum below 2^28 + 18·2^20 < 2^31.
+    constexpr std::int64_t step_limit = std::int64_t{1} << 20;
+    constexpr std::int64_t origin_limit = std::int64_t{1} << 28;
+    if (setup.y_end - setup.y_begin > 16) return false;
+    for (int i = 0; i < 3; ++i) {
+        if (setup.edge_origin[i] > origin_limit || setup.edge_origin[i] < -origin_limit)
+            return false;
+        if (setup.step_x[i] > step_limit || setup.step_x[i] < -step_limit) return false;
+        if (setup.step_y[i] > step_limit || setup.step_y[i] < -step_limit) return false;
+    }
+    return true;
+}
+
+// Whether this CPU can run the block, and whether it is in use (by default when it can).
+bool fragment_blocks_supported();
+bool fragment_blocks_enabled();
+// Turns the block on or off (on only where supported); for tests and benchmarks.
+void set_fragment_blocks(bool enabled);
+
+// Rows [y, min(y + 4, y_end)) of the triangle: the fragments that pass the depth test, in
+// order, into `sink` (whose depths are written if depth_write). Returns how many.
+// Only while fragment_blocks_enabled(), for a triangle that fits_fragment_block().
+int traverse_fragment_block(const BlockTriangle& triangle, int y, const FragmentSink& sink);
+
+}  // namespace weft::raster

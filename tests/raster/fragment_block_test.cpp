@@ -1,0 +1,163 @@
+// The block path for small triangles (fragment_block.h) against the scalar pixel loop: the
+// truth is the scalar loop's own frame, which must come out the same to the byte — colours
+// and depths — whichever path drew each triangle.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "raster/camera.h"
+#include "raster/fragment_block.h"
+#include "raster/framebuffer.h"
+#include "raster/mesh.h"
+#include "raster/mesh_renderer.h"
+
+namespace weft::raster {
+namespace {
+
+// Restores the block path's switch when a test ends.
+struct BlockSwitch {
+    ~BlockSwitch() { set_fragment_blocks(true); }
+};
+
+// A crumpled sheet of `cells`² quads with jittered corners: triangles of a fraction of a
+// pixel to several pixels across, slivers among them, folds that hide parts of the sheet
+// behind others (so depth tests fail inside one draw) and both sides in view.
+TriangleMesh crumpled_sheet(int cells, float size, std::uint32_t seed) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<float> jitter(-0.45f, 0.45f);
+    TriangleMesh mesh;
+    const float spacing = size / static_cast<float>(cells);
+    for (int j = 0; j <= cells; ++j) {
+        for (int i = 0; i <= cells; ++i) {
+            const float x = (static_cast<float>(i) + jitter(random)) * spacing - 0.5f * size;
+            const float y = (static_cast<float>(j) + jitter(random)) * spacing - 0.5f * size;
+            const float z =
+                0.15f * std::sin(9.0f * x) * std::cos(7.0f * y) + 0.5f * spacing * jitter(random);
+            mesh.positions.push_back({x, y, z});
+            mesh.uvs.push_back({static_cast<float>(i) / cells, static_cast<float>(j) / cells});
+        }
+    }
+    const auto row = static_cast<std::uint32_t>(cells + 1);
+    for (std::uint32_t j = 0; j < static_cast<std::uint32_t>(cells); ++j) {
+        for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(cells); ++i) {
+            const std::uint32_t corner = j * row + i;
+            mesh.triangles.push_back({corner, corner + 1, corner + row});
+            mesh.triangles.push_back({corner + 1, corner + row + 1, corner + row});
+        }
+    }
+    mesh.normals = compute_vertex_normals(mesh.positions, mesh.triangles);
+    return mesh;
+}
+
+struct Frames {
+    Framebuffer blocks, scalar;
+};
+
+// The same draw with the block path on and off.
+template <class Draw>
+Frames draw_both_ways(int width, int height, Draw&& draw) {
+    Frames frames{Framebuffer(width, height), Framebuffer(width, height)};
+    set_fragment_blocks(true);
+    frames.blocks.clear(Rgba8{10, 20, 30, 255});
+    draw(frames.blocks);
+    set_fragment_blocks(false);
+    frames.scalar.clear(Rgba8{10, 20, 30, 255});
+    draw(frames.scalar);
+    set_fragment_blocks(true);
+    return frames;
+}
+
+void expect_same(const Frames& frames, const char* what) {
+    const Framebuffer &a = frames.blocks, &b = frames.scalar;
+    std::size_t covered = 0, differing = 0;
+    for (std::size_t i = 0; i < a.depths().size(); ++i) {
+        if (b.depths()[i] < 1.0f) ++covered;
+        if (!(a.colours()[i] == b.colours()[i]) || a.depths()[i] != b.depths()[i]) ++differing;
+    }
+    // The frame must show enough of the sheet for the comparison to mean something.
+    EXPECT_GT(covered, a.depths().size() / 4) << what;
+    EXPECT_EQ(differing, 0u) << what << ": pixels that differ between the two paths";
+}
+
+TEST(FragmentBlock, DrawsTheFrameTheScalarLoopDraws) {
+    if (!fragment_blocks_supported()) GTEST_SKIP() << "no AVX-512 on this CPU";
+    BlockSwitch restore;
+    // Odd sizes so that blocks hang over the right and bottom edges of the frame, and a
+    // sheet larger than the view so that it is cut there.
+    const int width = 203, height = 157;
+    const Camera camera = make_camera({0.1f, 0.3f, 1.6f}, {0.0f, 0.0f, 0.0f}, 60.0f);
+    const TriangleMesh small = crumpled_sheet(150, 2.2f, 7);  // about 1–3 pixels a cell
+    const TriangleMesh large = crumpled_sheet(12, 1.2f, 8);   // several pixels: scalar path
+    Lighting lighting;
+    lighting.direction_to_light = {0.3f, 0.8f, 0.5f};
+
+    SurfaceStyle plain;
+    SurfaceStyle checker;
+    checker.pattern = SurfacePattern::checker;
+    checker.pattern_frequency = 40.0f;
+    std::vector<glm::vec3> vertex_colours(small.positions.size());
+    for (std::size_t i = 0; i < vertex_colours.size(); ++i)
+        vertex_colours[i] = {static_cast<float>(i % 7) / 7.0f, static_cast<float>(i % 5) / 5.0f,
+                             0.5f};
+    MeshView coloured = small.view();
+    coloured.colours = vertex_colours;
+
+    // Each varying layout the mesh shader has; two meshes in one frame (blocks and the
+    // scalar loop share the shader's queue, and each tests depths the other wrote); and one
+    // sheet drawn twice, whose second draw meets depths equal to its own and must fail them.
+    expect_same(draw_both_ways(width, height,
+                               [&](Framebuffer& frame) {
+                                   draw_mesh(frame, camera, small.view(), plain, lighting);
+                               }),
+                "plain");
+    expect_same(draw_both_ways(width, height,
+                               [&](Framebuffer& frame) {
+                                   draw_mesh(frame, camera, small.view(), checker, lighting);
+                                   draw_mesh(frame, camera, large.view(), checker, lighting);
+                               }),
+                "checker, two meshes");
+    expect_same(draw_both_ways(width, height,
+                               [&](Framebuffer& frame) {
+                                   draw_mesh(frame, camera, small.view(), plain, lighting);
+                                   draw_mesh(frame, camera, small.view(), checker, lighting);
+                               }),
+                "one sheet twice");
+    expect_same(draw_both_ways(width, height,
+                               [&](Framebuffer& frame) {
+                                   draw_mesh(frame, camera, coloured, plain, lighting);
+                               }),
+                "vertex colours");
+    expect_same(draw_both_ways(width, height,
+                               [&](Framebuffer& frame) {
+                                   draw_mesh(frame, camera, coloured, checker, lighting);
+                               }),
+                "vertex colours and checker");
+
+    // Drawn band by band, whose edges cut through blocks.
+    PreparedMesh prepared;
+    ASSERT_TRUE(prepare_mesh(camera, width, height, small.view(), checker, prepared));
+    TriangleBands bands;
+    bin_triangles(prepared, 7, bands);
+    expect_same(draw_both_ways(width, height,
+                               [&](Framebuffer& frame) {
+                                   for (int band = 0; band < bands.band_count; ++band)
+                                       draw_prepared_band(frame, prepared, bands, band, checker,
+                                                          lighting);
+                               }),
+                "bands of 7 rows");
+}
+
+TEST(FragmentBlock, SwitchFollowsTheCpu) {
+    BlockSwitch restore;
+    set_fragment_blocks(true);
+    EXPECT_EQ(fragment_blocks_enabled(), fragment_blocks_supported());
+    set_fragment_blocks(false);
+    EXPECT_FALSE(fragment_blocks_enabled());
+}
+
+}  // namespace
+}  // namespace weft::raster

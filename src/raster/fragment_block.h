@@ -14,8 +14,8 @@
 // fragments come out in the scalar loop's order (row by row, left to right), so a frame is
 // the same to the byte whichever path drew it (tested).
 //
-// The block needs AVX-512 (its mask registers and compress). Elsewhere, or when turned off,
-// the scalar loop draws every triangle.
+// The block needs AVX-512 (its mask registers and compress): where it is not in use
+// (vector_isa.h), the scalar loop draws every triangle.
 #pragma once
 
 #include <cstdint>
@@ -66,15 +66,9 @@ inline bool fits_fragment_block(const TriangleSetup& setup) {
     return true;
 }
 
-// Whether this CPU can run the block, and whether it is in use (by default when it can).
-bool fragment_blocks_supported();
-bool fragment_blocks_enabled();
-// Turns the block on or off (on only where supported); for tests and benchmarks.
-void set_fragment_blocks(bool enabled);
-
 // Rows [y, min(y + 4, y_end)) of the triangle: the fragments that pass the depth test, in
 // order, into `sink` (whose depths are written if depth_write). Returns how many.
-// Only while fragment_blocks_enabled(), for a triangle that fits_fragment_block().
+// Only while avx512_in_use() (vector_isa.h), for a triangle that fits_fragment_block().
 int traverse_fragment_block(const BlockTriangle& triangle, int y, const FragmentSink& sink);
 
 }  // namespace weft::raster

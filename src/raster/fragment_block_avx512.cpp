@@ -14,11 +14,7 @@
 
 namespace weft::raster {
 
-bool fragment_block_avx512_built() {
-    return true;
-}
-
-int traverse_fragment_block_avx512(const BlockTriangle& triangle, int y, const FragmentSink& sink) {
+int traverse_fragment_block(const BlockTriangle& triangle, int y, const FragmentSink& sink) {
     const TriangleSetup& setup = *triangle.setup;
     // Lane l is pixel (x_begin + l % 4, y + l / 4).
     const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
@@ -119,12 +115,8 @@ int traverse_fragment_block_avx512(const BlockTriangle& triangle, int y, const F
 
 namespace weft::raster {
 
-bool fragment_block_avx512_built() {
-    return false;
-}
-
-int traverse_fragment_block_avx512(const BlockTriangle&, int, const FragmentSink&) {
-    return 0;
+int traverse_fragment_block(const BlockTriangle&, int, const FragmentSink&) {
+    return 0;  // never called: avx512_supported() is false in such a build
 }
 
 }  // namespace weft::raster

@@ -40,9 +40,7 @@ struct SurfaceShader {
         ShadingLanes lanes;
     };
 
-    const SurfaceStyle* style;
-    PreparedLighting lighting;
-    glm::vec3 eye;
+    PreparedSurface surface;
     Rgba8* colours;
     Queue* queue;
 
@@ -75,59 +73,22 @@ struct SurfaceShader {
     // pixel covered twice ends with the later fragment's colour, as if drawn at once.
     void flush() const {
         Queue& q = *queue;
-        ShadingLanes& lanes = q.lanes;
-        const int count = q.count;
-        const glm::vec3 front_colour = style->front_colour, back_colour = style->back_colour;
-        const SurfacePattern pattern = style->pattern;
-        const float frequency = style->pattern_frequency, contrast = style->pattern_contrast;
-        for (int i = 0; i < count; ++i) {
-            const bool seen_front = q.front[i] != 0.0f;
-            float r, g, b;
-            if constexpr (HasColour) {
-                r = q.varyings[colour_slot][i];
-                g = q.varyings[colour_slot + 1][i];
-                b = q.varyings[colour_slot + 2][i];
-            } else {
-                r = seen_front ? front_colour.r : back_colour.r;
-                g = seen_front ? front_colour.g : back_colour.g;
-                b = seen_front ? front_colour.b : back_colour.b;
-            }
-            if constexpr (HasUv) {
-                const float factor =
-                    pattern_lane(pattern, frequency, contrast, q.varyings[uv_slot][i],
-                                 q.varyings[uv_slot + 1][i]);
-                r *= factor;
-                g *= factor;
-                b *= factor;
-            }
-            lanes.base_r[i] = r;
-            lanes.base_g[i] = g;
-            lanes.base_b[i] = b;
-            lanes.normal_x[i] = q.varyings[normal_slot][i];
-            lanes.normal_y[i] = q.varyings[normal_slot + 1][i];
-            lanes.normal_z[i] = q.varyings[normal_slot + 2][i];
-            lanes.front[i] = q.front[i];
-            // The unit vector to the eye (zero at the eye itself).
-            const float tx = eye.x - q.varyings[position_slot][i];
-            const float ty = eye.y - q.varyings[position_slot + 1][i];
-            const float tz = eye.z - q.varyings[position_slot + 2][i];
-            const float distance_squared = tx * tx + ty * ty + tz * tz;
-            const float inverse_distance = 1.0f / std::sqrt(distance_squared);
-            const bool away = distance_squared > 0.0f;
-            lanes.eye_x[i] = away ? tx * inverse_distance : 0.0f;
-            lanes.eye_y[i] = away ? ty * inverse_distance : 0.0f;
-            lanes.eye_z[i] = away ? tz * inverse_distance : 0.0f;
+        SurfaceBatch batch;
+        batch.count = q.count;
+        batch.pixels = q.pixel;
+        for (int k = 0; k < 3; ++k) {
+            batch.position[k] = q.varyings[position_slot + k];
+            batch.normal[k] = q.varyings[normal_slot + k];
         }
-        shade_lanes(lighting, lanes, count);
-        // Rounded to 8 bits over the whole batch (a loop that vectorises), then written.
-        std::uint8_t red[ShadingLanes::capacity], green[ShadingLanes::capacity],
-            blue[ShadingLanes::capacity];
-        for (int i = 0; i < count; ++i) {
-            red[i] = to_channel(lanes.lit_r[i]);
-            green[i] = to_channel(lanes.lit_g[i]);
-            blue[i] = to_channel(lanes.lit_b[i]);
+        if constexpr (HasUv) {
+            batch.uv[0] = q.varyings[uv_slot];
+            batch.uv[1] = q.varyings[uv_slot + 1];
         }
-        for (int i = 0; i < count; ++i) colours[q.pixel[i]] = {red[i], green[i], blue[i], 255};
+        if constexpr (HasColour) {
+            for (int k = 0; k < 3; ++k) batch.colour[k] = q.varyings[colour_slot + k];
+        }
+        batch.front = q.front;
+        shade_batch(surface, batch, q.lanes, colours);
         q.count = 0;
     }
 };
@@ -185,7 +146,7 @@ void draw_prepared_with(Framebuffer& framebuffer, const PreparedMesh& prepared,
 
     // Cull, clip, rasterize, shade: triangle_rasterizer.h.
     typename Shader::Queue queue;
-    const Shader shader{&style, prepare_lighting(style, lighting), prepared.eye,
+    const Shader shader{prepare_surface(style, lighting, prepared.eye),
                         framebuffer.colours().data(), &queue};
     RasterState state;
     state.scissor = bounds;

@@ -5,7 +5,17 @@
 
 #include <glm/geometric.hpp>
 
+#include "raster/vector_isa.h"
+
 namespace weft::raster {
+
+// The AVX-512 build (surface_shading_avx512.cpp).
+void shade_batch_avx512(const PreparedSurface& surface, const SurfaceBatch& batch,
+                        ShadingLanes& lanes, Rgba8* colours);
+
+namespace {
+#include "raster/surface_batch.inl"
+}  // namespace
 
 PreparedLighting prepare_lighting(const SurfaceStyle& style, const Lighting& lighting) {
     PreparedLighting prepared;
@@ -33,68 +43,28 @@ PreparedLighting prepare_lighting(const SurfaceStyle& style, const Lighting& lig
 }
 
 void shade_lanes(const PreparedLighting& lighting, ShadingLanes& lanes, int count) {
-    const float light_x = lighting.to_light.x, light_y = lighting.to_light.y,
-                light_z = lighting.to_light.z;
-    // The unit normal on the side seen, and the three light terms. Each choice selects
-    // between values computed either way, so the loop has no branch.
-    for (int i = 0; i < count; ++i) {
-        const float front = lanes.front[i];
-        const float ex = lanes.eye_x[i], ey = lanes.eye_y[i], ez = lanes.eye_z[i];
-        const float nx0 = lanes.normal_x[i], ny0 = lanes.normal_y[i], nz0 = lanes.normal_z[i];
-        const float length_squared = nx0 * nx0 + ny0 * ny0 + nz0 * nz0;
-        const float inverse_length = 1.0f / std::sqrt(length_squared);
-        // A vanishing normal (a vertex of only degenerate triangles) is lit as if facing
-        // the eye; two-sided, the back is lit through its own (flipped) normal.
-        const bool usable = length_squared > 1e-24f;
-        const bool seen_front = front != 0.0f;
-        float nx = usable ? nx0 * inverse_length : (seen_front ? ex : -ex);
-        float ny = usable ? ny0 * inverse_length : (seen_front ? ey : -ey);
-        float nz = usable ? nz0 * inverse_length : (seen_front ? ez : -ez);
-        nx = seen_front ? nx : -nx;
-        ny = seen_front ? ny : -ny;
-        nz = seen_front ? nz : -nz;
-        lanes.lambert[i] = std::max(nx * light_x + ny * light_y + nz * light_z, 0.0f);
-        const float hx = light_x + ex, hy = light_y + ey, hz = light_z + ez;
-        const float halfway_squared = hx * hx + hy * hy + hz * hz;
-        lanes.halfway_squared[i] = halfway_squared;
-        lanes.n_dot_h[i] = (nx * hx + ny * hy + nz * hz) / std::sqrt(halfway_squared);
-        lanes.fill[i] = std::max(nx * ex + ny * ey + nz * ez, 0.0f);
-    }
+    shade_lanes_body(lighting, lanes, count);
+}
 
-    // The highlight's power of n·h: by squaring for a whole exponent — bit by bit over all
-    // lanes, the same products in the same order as one pixel's loop — else std::pow.
-    if (lighting.integer_shininess >= 0) {
-        float* power = lanes.highlight;
-        float squares[ShadingLanes::capacity];
-        for (int i = 0; i < count; ++i) {
-            power[i] = 1.0f;
-            squares[i] = lanes.n_dot_h[i];
-        }
-        for (int n = lighting.integer_shininess; n > 0; n >>= 1) {
-            if (n & 1)
-                for (int i = 0; i < count; ++i) power[i] *= squares[i];
-            for (int i = 0; i < count; ++i) squares[i] *= squares[i];
-        }
-    } else {
-        for (int i = 0; i < count; ++i)
-            lanes.highlight[i] = std::pow(lanes.n_dot_h[i], lighting.shininess);
-    }
+PreparedSurface prepare_surface(const SurfaceStyle& style, const Lighting& lighting,
+                                const glm::vec3& eye) {
+    PreparedSurface surface;
+    surface.lighting = prepare_lighting(style, lighting);
+    surface.eye = eye;
+    surface.front_colour = style.front_colour;
+    surface.back_colour = style.back_colour;
+    surface.pattern = style.pattern;
+    surface.pattern_frequency = style.pattern_frequency;
+    surface.pattern_contrast = style.pattern_contrast;
+    return surface;
+}
 
-    const float strength = lighting.specular_strength, cutoff = lighting.specular_cutoff;
-    const glm::vec3 ambient = lighting.ambient, light = lighting.light, fill = lighting.eye_fill;
-    for (int i = 0; i < count; ++i) {
-        // The highlight where the light reaches the surface and n·h clears the cutoff.
-        const bool lit = lanes.lambert[i] > 0.0f && strength > 0.0f &&
-                         lanes.halfway_squared[i] > 0.0f && lanes.n_dot_h[i] > cutoff;
-        const float specular = lit ? strength * lanes.highlight[i] : 0.0f;
-        const float lambert = lanes.lambert[i], eye_fill = lanes.fill[i];
-        lanes.lit_r[i] = lanes.base_r[i] * (ambient.r + light.r * lambert + fill.r * eye_fill) +
-                         light.r * specular;
-        lanes.lit_g[i] = lanes.base_g[i] * (ambient.g + light.g * lambert + fill.g * eye_fill) +
-                         light.g * specular;
-        lanes.lit_b[i] = lanes.base_b[i] * (ambient.b + light.b * lambert + fill.b * eye_fill) +
-                         light.b * specular;
-    }
+void shade_batch(const PreparedSurface& surface, const SurfaceBatch& batch, ShadingLanes& lanes,
+                 Rgba8* colours) {
+    if (avx512_in_use())
+        shade_batch_avx512(surface, batch, lanes, colours);
+    else
+        shade_batch_body(surface, batch, lanes, colours);
 }
 
 float pattern_factor(const SurfaceStyle& style, const glm::vec2& uv) {

@@ -7,7 +7,8 @@
 // over arrays, which the compiler vectorises. Every lane computes exactly what the one-pixel
 // formula computes — the same operations in the same order, choices made by selecting
 // between values computed either way — so a pixel's colour does not depend on which batch
-// it was shaded in, nor on the thread that drew it.
+// it was shaded in, nor on the thread that drew it. The loops (surface_batch.inl) are also
+// built with AVX-512, used where the CPU has it (vector_isa.h), with the same results.
 #pragma once
 
 #include <cstdint>
@@ -53,6 +54,35 @@ struct ShadingLanes {
 
 // Lights lanes [0, count) (count <= capacity).
 void shade_lanes(const PreparedLighting& lighting, ShadingLanes& lanes, int count);
+
+// Everything about a surface's shading that is constant over a draw.
+struct PreparedSurface {
+    PreparedLighting lighting;
+    glm::vec3 eye{0.0f};  // world space, m
+    glm::vec3 front_colour{0.0f}, back_colour{0.0f};
+    SurfacePattern pattern = SurfacePattern::none;
+    float pattern_frequency = 0.0f, pattern_contrast = 0.0f;
+};
+
+PreparedSurface prepare_surface(const SurfaceStyle& style, const Lighting& lighting,
+                                const glm::vec3& eye);
+
+// Covered pixels waiting for their colour (the mesh shader's queue): one array per value,
+// `count` (<= ShadingLanes::capacity) of each.
+struct SurfaceBatch {
+    int count = 0;
+    const std::uint32_t* pixels = nullptr;  // framebuffer index of each
+    const float* position[3] = {};          // world position, m
+    const float* normal[3] = {};            // interpolated normal, any length
+    const float* uv[2] = {};                // pattern coordinates; null: no pattern
+    const float* colour[3] = {};            // vertex colours; null: the style's two colours
+    const float* front = nullptr;           // 1 where the front face is seen, else 0
+};
+
+// Lights the batch and writes each pixel's colour, in the batch's order: a pixel queued
+// twice ends with its later colour. `lanes` is scratch.
+void shade_batch(const PreparedSurface& surface, const SurfaceBatch& batch, ShadingLanes& lanes,
+                 Rgba8* colours);
 
 // pattern_factor (mesh_renderer.h) in a form that vectorises: the cell index as a 32-bit
 // integer, which is exact wherever |u| and |v| times the frequency stay below 2^30; beyond

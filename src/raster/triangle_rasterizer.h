@@ -42,6 +42,7 @@
 #include "raster/framebuffer.h"
 #include "raster/pixel_rect.h"
 #include "raster/triangle_setup.h"
+#include "raster/vector_isa.h"
 
 namespace weft::raster {
 
@@ -132,7 +133,7 @@ void traverse_and_shade(Framebuffer& framebuffer, const RasterState& state,
         }
     }
     if constexpr (takes_fragment_blocks<Shader>()) {
-        if (fragment_blocks_enabled() && fits_fragment_block(setup)) {
+        if (avx512_in_use() && fits_fragment_block(setup)) {
             const BlockTriangle triangle{
                 &setup,
                 {varying_over_w[0].data(), varying_over_w[1].data(), varying_over_w[2].data()},

@@ -1,6 +1,7 @@
-// The block path for small triangles (fragment_block.h) against the scalar pixel loop: the
-// truth is the scalar loop's own frame, which must come out the same to the byte — colours
-// and depths — whichever path drew each triangle.
+// The AVX-512 code of the rasterizer (vector_isa.h: the block traversal of small triangles
+// and the batched lighting) against the baseline build: the truth is the frame the scalar
+// pixel loop and the baseline lighting draw, which must come out the same to the byte —
+// colours and depths — with AVX-512 in use.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,17 +11,17 @@
 #include <vector>
 
 #include "raster/camera.h"
-#include "raster/fragment_block.h"
 #include "raster/framebuffer.h"
 #include "raster/mesh.h"
 #include "raster/mesh_renderer.h"
+#include "raster/vector_isa.h"
 
 namespace weft::raster {
 namespace {
 
-// Restores the block path's switch when a test ends.
-struct BlockSwitch {
-    ~BlockSwitch() { set_fragment_blocks(true); }
+// Puts AVX-512 back in use (where supported) when a test ends.
+struct Avx512Switch {
+    ~Avx512Switch() { use_avx512(true); }
 };
 
 // A crumpled sheet of `cells`² quads with jittered corners: triangles of a fraction of a
@@ -38,7 +39,8 @@ TriangleMesh crumpled_sheet(int cells, float size, std::uint32_t seed) {
             const float z =
                 0.15f * std::sin(9.0f * x) * std::cos(7.0f * y) + 0.5f * spacing * jitter(random);
             mesh.positions.push_back({x, y, z});
-            mesh.uvs.push_back({static_cast<float>(i) / cells, static_cast<float>(j) / cells});
+            mesh.uvs.push_back({static_cast<float>(i) / static_cast<float>(cells),
+                                static_cast<float>(j) / static_cast<float>(cells)});
         }
     }
     const auto row = static_cast<std::uint32_t>(cells + 1);
@@ -54,25 +56,25 @@ TriangleMesh crumpled_sheet(int cells, float size, std::uint32_t seed) {
 }
 
 struct Frames {
-    Framebuffer blocks, scalar;
+    Framebuffer avx512, baseline;
 };
 
-// The same draw with the block path on and off.
+// The same draw with AVX-512 in use and not.
 template <class Draw>
 Frames draw_both_ways(int width, int height, Draw&& draw) {
     Frames frames{Framebuffer(width, height), Framebuffer(width, height)};
-    set_fragment_blocks(true);
-    frames.blocks.clear(Rgba8{10, 20, 30, 255});
-    draw(frames.blocks);
-    set_fragment_blocks(false);
-    frames.scalar.clear(Rgba8{10, 20, 30, 255});
-    draw(frames.scalar);
-    set_fragment_blocks(true);
+    use_avx512(true);
+    frames.avx512.clear(Rgba8{10, 20, 30, 255});
+    draw(frames.avx512);
+    use_avx512(false);
+    frames.baseline.clear(Rgba8{10, 20, 30, 255});
+    draw(frames.baseline);
+    use_avx512(true);
     return frames;
 }
 
 void expect_same(const Frames& frames, const char* what) {
-    const Framebuffer &a = frames.blocks, &b = frames.scalar;
+    const Framebuffer &a = frames.avx512, &b = frames.baseline;
     std::size_t covered = 0, differing = 0;
     for (std::size_t i = 0; i < a.depths().size(); ++i) {
         if (b.depths()[i] < 1.0f) ++covered;
@@ -80,12 +82,12 @@ void expect_same(const Frames& frames, const char* what) {
     }
     // The frame must show enough of the sheet for the comparison to mean something.
     EXPECT_GT(covered, a.depths().size() / 4) << what;
-    EXPECT_EQ(differing, 0u) << what << ": pixels that differ between the two paths";
+    EXPECT_EQ(differing, 0u) << what << ": pixels that differ between the two builds";
 }
 
-TEST(FragmentBlock, DrawsTheFrameTheScalarLoopDraws) {
-    if (!fragment_blocks_supported()) GTEST_SKIP() << "no AVX-512 on this CPU";
-    BlockSwitch restore;
+TEST(Avx512, DrawsTheFrameTheBaselineBuildDraws) {
+    if (!avx512_supported()) GTEST_SKIP() << "no AVX-512 on this CPU";
+    Avx512Switch restore;
     // Odd sizes so that blocks hang over the right and bottom edges of the frame, and a
     // sheet larger than the view so that it is cut there.
     const int width = 203, height = 157;
@@ -96,6 +98,9 @@ TEST(FragmentBlock, DrawsTheFrameTheScalarLoopDraws) {
     lighting.direction_to_light = {0.3f, 0.8f, 0.5f};
 
     SurfaceStyle plain;
+    SurfaceStyle glossy;  // a shininess that is not a whole number: std::pow, not squaring
+    glossy.shininess = 7.5f;
+    glossy.specular_strength = 0.6f;
     SurfaceStyle checker;
     checker.pattern = SurfacePattern::checker;
     checker.pattern_frequency = 40.0f;
@@ -128,9 +133,9 @@ TEST(FragmentBlock, DrawsTheFrameTheScalarLoopDraws) {
                 "one sheet twice");
     expect_same(draw_both_ways(width, height,
                                [&](Framebuffer& frame) {
-                                   draw_mesh(frame, camera, coloured, plain, lighting);
+                                   draw_mesh(frame, camera, coloured, glossy, lighting);
                                }),
-                "vertex colours");
+                "vertex colours, glossy");
     expect_same(draw_both_ways(width, height,
                                [&](Framebuffer& frame) {
                                    draw_mesh(frame, camera, coloured, checker, lighting);
@@ -151,12 +156,12 @@ TEST(FragmentBlock, DrawsTheFrameTheScalarLoopDraws) {
                 "bands of 7 rows");
 }
 
-TEST(FragmentBlock, SwitchFollowsTheCpu) {
-    BlockSwitch restore;
-    set_fragment_blocks(true);
-    EXPECT_EQ(fragment_blocks_enabled(), fragment_blocks_supported());
-    set_fragment_blocks(false);
-    EXPECT_FALSE(fragment_blocks_enabled());
+TEST(Avx512, SwitchFollowsTheCpu) {
+    Avx512Switch restore;
+    use_avx512(true);
+    EXPECT_EQ(avx512_in_use(), avx512_supported());
+    use_avx512(false);
+    EXPECT_FALSE(avx512_in_use());
 }
 
 }  // namespace

@@ -100,6 +100,7 @@ void transform_vertices(const glm::mat4& view_projection, const MeshView& mesh, 
                         PreparedMesh& prepared, std::size_t begin, std::size_t end) {
     const glm::mat4 clip_from_model = view_projection * mesh.model;
     const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(mesh.model)));
+    const auto stride = static_cast<std::size_t>(prepared.varying_stride);
     for (std::size_t i = begin; i < end; ++i) {
         const glm::vec4 model_position(mesh.positions[i], 1.0f);
         ClipVertex& vertex = prepared.vertices[i];
@@ -122,6 +123,11 @@ void transform_vertices(const glm::mat4& view_projection, const MeshView& mesh, 
         if (colour_slot >= 0) {
             for (int k = 0; k < 3; ++k) v[colour_slot + k] = mesh.colours[i][k];
         }
+        if ((prepared.outcodes[i] & clipping_planes) == 0) {
+            const float inverse_w = prepared.window[i].inverse_w;
+            float* over_w = prepared.varyings_over_w.data() + i * stride;
+            for (std::size_t k = 0; k < stride; ++k) over_w[k] = v[k] * inverse_w;
+        }
     }
 }
 
@@ -137,6 +143,8 @@ void draw_prepared_with(Framebuffer& framebuffer, const PreparedMesh& prepared,
     const std::uint32_t* outcodes = prepared.outcodes.data();
     const WindowVertex* window = prepared.window.data();
     const TriangleIndices* triangles = prepared.triangles.data();
+    const float* varyings_over_w = prepared.varyings_over_w.data();
+    const auto stride = static_cast<std::size_t>(prepared.varying_stride);
     const PixelRect bounds = scissor.intersect(framebuffer.bounds());
     if (bounds.empty()) return;
     // A triangle whose snapped corners all lie a pixel or more above or below the band
@@ -161,8 +169,11 @@ void draw_prepared_with(Framebuffer& framebuffer, const PreparedMesh& prepared,
                 (y0 > band_bottom && y1 > band_bottom && y2 > band_bottom))
                 return;
         }
+        const float* const over_w[3] = {varyings_over_w + t[0] * stride,
+                                        varyings_over_w + t[1] * stride,
+                                        varyings_over_w + t[2] * stride};
         draw_triangle(framebuffer, state, vertices[t[0]], vertices[t[1]], vertices[t[2]],
-                      window[t[0]], window[t[1]], window[t[2]], codes, shader);
+                      window[t[0]], window[t[1]], window[t[2]], over_w, codes, shader);
     });
     shader.flush();
 }
@@ -239,6 +250,12 @@ bool prepare_mesh(const Camera& camera, int width, int height, const MeshView& m
     const int colour_slot = !prepared.with_colour ? -1
                             : prepared.with_uv    ? SurfaceShader<true, true>::colour_slot
                                                   : SurfaceShader<false, true>::colour_slot;
+    prepared.varying_stride =
+        prepared.with_uv ? (prepared.with_colour ? SurfaceShader<true, true>::varying_count
+                                                 : SurfaceShader<true, false>::varying_count)
+                         : (prepared.with_colour ? SurfaceShader<false, true>::varying_count
+                                                 : SurfaceShader<false, false>::varying_count);
+    prepared.varyings_over_w.resize(count * static_cast<std::size_t>(prepared.varying_stride));
     const glm::mat4 view_projection = view_projection_matrix(camera, width, height);
     // Each vertex is written by one slice: the same values for any split.
     constexpr std::size_t min_vertices_for_threads = 4096;

@@ -77,6 +77,10 @@ struct PreparedMesh {
     std::vector<std::uint32_t> outcodes;
     // Each vertex through the divide, viewport and snap (meaningless where it needs clipping).
     std::vector<WindowVertex> window;
+    // Each vertex's varyings divided by its w, varying_stride of them per vertex, as the
+    // rasterizer interpolates them (meaningless where it needs clipping).
+    std::vector<float> varyings_over_w;
+    int varying_stride = 0;
     int width = 0, height = 0;  // of the framebuffer it was prepared for
     glm::vec3 eye{0.0f};        // camera position, for the shader's view vector
     bool with_uv = false, with_colour = false;

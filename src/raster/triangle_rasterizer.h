@@ -94,6 +94,24 @@ constexpr bool takes_fragment_blocks() {
         return false;
 }
 
+// Stages 4–6 for a set-up triangle that fits_fragment_block(), four rows at a time, given
+// each setup vertex's varyings divided by its w.
+template <class Shader>
+void traverse_blocks(Framebuffer& framebuffer, const RasterState& state, const TriangleSetup& setup,
+                     const float* const (&varying_over_w)[3], int varying_count, Shader& shader) {
+    const BlockTriangle triangle{&setup,
+                                 {varying_over_w[0], varying_over_w[1], varying_over_w[2]},
+                                 varying_count,
+                                 framebuffer.depths().data(),
+                                 static_cast<std::uint32_t>(framebuffer.width()),
+                                 state.depth_test,
+                                 state.depth_write};
+    for (int y = setup.y_begin; y < setup.y_end; y += fragment_block_rows) {
+        const FragmentSink sink = shader.sink();
+        shader.commit(traverse_fragment_block(triangle, y, sink), setup.front_facing);
+    }
+}
+
 // Stages 4–6 for one set-up triangle.
 //
 // Everything the loop reads is copied into locals first: colour stores go through unsigned
@@ -134,18 +152,9 @@ void traverse_and_shade(Framebuffer& framebuffer, const RasterState& state,
     }
     if constexpr (takes_fragment_blocks<Shader>()) {
         if (avx512_in_use() && fits_fragment_block(setup)) {
-            const BlockTriangle triangle{
-                &setup,
-                {varying_over_w[0].data(), varying_over_w[1].data(), varying_over_w[2].data()},
-                varying_count,
-                depths,
-                static_cast<std::uint32_t>(width),
-                depth_test,
-                depth_write};
-            for (int y = setup.y_begin; y < setup.y_end; y += fragment_block_rows) {
-                const FragmentSink sink = shader.sink();
-                shader.commit(traverse_fragment_block(triangle, y, sink), setup.front_facing);
-            }
+            const float* const ordered[3] = {varying_over_w[0].data(), varying_over_w[1].data(),
+                                             varying_over_w[2].data()};
+            traverse_blocks(framebuffer, state, setup, ordered, varying_count, shader);
             return;
         }
     }
@@ -281,21 +290,36 @@ void draw_triangle(Framebuffer& framebuffer, const RasterState& state, const Cli
 
 // The same for a triangle of a prepared mesh, whose vertices the caller has also taken
 // through the divide, viewport and snap (window_vertex: used unless the triangle needs
-// clipping), and whose state has its scissor already inside the framebuffer and its varying
-// count in range.
+// clipping) and whose varyings it has divided by w (varying_over_w[i] for vertex i: the
+// state's varying count of them, each the vertex's varying times its window inverse_w), and
+// whose state has its scissor already inside the framebuffer and its varying count in range.
 template <class Shader>
 void draw_triangle(Framebuffer& framebuffer, const RasterState& state, const ClipVertex& a,
                    const ClipVertex& b, const ClipVertex& c, const WindowVertex& window_a,
                    const WindowVertex& window_b, const WindowVertex& window_c,
-                   const TriangleOutcodes& outcodes, Shader&& shader) {
+                   const float* const (&varying_over_w)[3], const TriangleOutcodes& outcodes,
+                   Shader&& shader) {
     if (outcodes.culled()) return;
     if (outcodes.needs_clipping()) {
         draw_triangle(framebuffer, state, a, b, c, outcodes, shader);
         return;
     }
     TriangleSetup setup;
-    if (setup_triangle(window_a, window_b, window_c, state.scissor, setup))
-        detail::traverse_set_up(framebuffer, state, setup, a, b, c, shader);
+    if (!setup_triangle(window_a, window_b, window_c, state.scissor, setup)) return;
+    if constexpr (detail::takes_fragment_blocks<Shader>()) {
+        // Small triangles straight to the blocks, with the caller's divided varyings.
+        if (avx512_in_use() && fits_fragment_block(setup)) {
+            const float* const ordered[3] = {varying_over_w[setup.vertex_order[0]],
+                                             varying_over_w[setup.vertex_order[1]],
+                                             varying_over_w[setup.vertex_order[2]]};
+            constexpr int varying_count = detail::static_varying_count<Shader>();
+            detail::traverse_blocks(framebuffer, state, setup, ordered,
+                                    varying_count >= 0 ? varying_count : state.varying_count,
+                                    shader);
+            return;
+        }
+    }
+    detail::traverse_set_up(framebuffer, state, setup, a, b, c, shader);
 }
 
 template <class Shader>

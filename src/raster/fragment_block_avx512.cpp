@@ -96,17 +96,39 @@ int traverse_fragment_block(const BlockTriangle& triangle, int y, const Fragment
         _mm512_set1_epi32(static_cast<std::int32_t>(first_pixel)),
         _mm512_add_epi32(
             column, _mm512_mullo_epi32(row, _mm512_set1_epi32(static_cast<std::int32_t>(width)))));
-    _mm512_storeu_si512(sink.pixels, _mm512_maskz_compress_epi32(passed, pixel));
     const __m512 w = _mm512_div_ps(
         _mm512_set1_ps(1.0f), blend(setup.inverse_w[0], setup.inverse_w[1], setup.inverse_w[2]));
-    for (int k = 0; k < triangle.varying_count; ++k) {
-        const __m512 varying =
-            _mm512_mul_ps(blend(triangle.varying_over_w[0][k], triangle.varying_over_w[1][k],
-                                triangle.varying_over_w[2][k]),
-                          w);
-        _mm512_storeu_ps(sink.varyings[k], _mm512_maskz_compress_ps(passed, varying));
+    // Packed first, then interpolated: the same operations on the same values, in fewer
+    // lanes' worth of shuffles (four packs instead of one per varying).
+    for (int i = 0; i < 3; ++i) barycentric[i] = _mm512_maskz_compress_ps(passed, barycentric[i]);
+    const __m512 packed_w = _mm512_maskz_compress_ps(passed, w);
+    const __m512i packed_pixel = _mm512_maskz_compress_epi32(passed, pixel);
+    const int count = __builtin_popcount(passed);
+    const float* const* over_w = triangle.varying_over_w;
+    // Most blocks pass a few fragments: then half-width vectors suffice.
+    if (count <= 8) {
+        _mm256_storeu_si256(reinterpret_cast<__m256i*>(sink.pixels),
+                            _mm512_castsi512_si256(packed_pixel));
+        const __m256 b0 = _mm512_castps512_ps256(barycentric[0]);
+        const __m256 b1 = _mm512_castps512_ps256(barycentric[1]);
+        const __m256 b2 = _mm512_castps512_ps256(barycentric[2]);
+        const __m256 w8 = _mm512_castps512_ps256(packed_w);
+        for (int k = 0; k < triangle.varying_count; ++k) {
+            const __m256 blended =
+                _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(b0, _mm256_set1_ps(over_w[0][k])),
+                                            _mm256_mul_ps(b1, _mm256_set1_ps(over_w[1][k]))),
+                              _mm256_mul_ps(b2, _mm256_set1_ps(over_w[2][k])));
+            _mm256_storeu_ps(sink.varyings[k], _mm256_mul_ps(blended, w8));
+        }
+    } else {
+        _mm512_storeu_si512(sink.pixels, packed_pixel);
+        for (int k = 0; k < triangle.varying_count; ++k) {
+            _mm512_storeu_ps(
+                sink.varyings[k],
+                _mm512_mul_ps(blend(over_w[0][k], over_w[1][k], over_w[2][k]), packed_w));
+        }
     }
-    return __builtin_popcount(passed);
+    return count;
 }
 
 }  // namespace weft::raster

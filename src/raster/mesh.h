@@ -51,6 +51,27 @@ void compute_vertex_normals(std::span<const glm::vec3> positions,
 std::vector<glm::vec3> compute_vertex_normals(std::span<const glm::vec3> positions,
                                               std::span<const TriangleIndices> triangles);
 
+// The triangles around each vertex, ascending: triangles[offsets[v]] up to (not including)
+// triangles[offsets[v + 1]]. A triangle naming a vertex twice is listed twice; one with an
+// index out of range is not listed.
+struct VertexTriangles {
+    std::vector<std::uint32_t> offsets;
+    std::vector<std::uint32_t> triangles;
+};
+void find_vertex_triangles(std::span<const TriangleIndices> triangles, std::size_t vertex_count,
+                           VertexTriangles& around);
+
+// compute_vertex_normals in two passes that threads can share, each taking a slice:
+// first each triangle's face normal (triangles [begin, end); zero for a triangle with an
+// index out of range), then each vertex's sum of the faces around it, in ascending order —
+// the same sums in the same order as the whole mesh's, hence the same bits. `faces` has one
+// element per triangle; `around` was found for these triangles and positions.size() vertices.
+void compute_face_normals(std::span<const glm::vec3> positions,
+                          std::span<const TriangleIndices> triangles, std::span<glm::vec3> faces,
+                          std::size_t begin, std::size_t end);
+void gather_vertex_normals(std::span<const glm::vec3> faces, const VertexTriangles& around,
+                           std::span<glm::vec3> normals, std::size_t begin, std::size_t end);
+
 // Every edge of the triangles once (smaller index first), sorted: a wireframe's lines.
 std::vector<LineIndices> unique_edges(std::span<const TriangleIndices> triangles);
 

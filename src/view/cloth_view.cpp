@@ -34,14 +34,35 @@ void ClothView::rebuild_topology(const Cloth& cloth) {
     intact_triangles_.clear();
     for (const Triangle& t : cloth.triangles) intact_triangles_.push_back({t.a, t.b, t.c});
     wireframe_edges_ = raster::unique_edges(intact_triangles_);
+    raster::find_vertex_triangles(intact_triangles_, positions_.size(), triangles_around_);
+    face_normals_.resize(intact_triangles_.size());
 }
 
-void ClothView::update(const Cloth& cloth) {
+void ClothView::update(const Cloth& cloth, WorkerPool* pool) {
     if (cloth.spring_count() != spring_count_ || cloth.triangles.size() != triangle_count_)
         rebuild_topology(cloth);
-    for (std::size_t p = 0; p < positions_.size(); ++p)
-        positions_[p] = glm::vec3(cloth.positions[p]);
-    raster::compute_vertex_normals(positions_, intact_triangles_, normals_);
+    // Positions, then every face normal, then each vertex's sum of its faces: each pass
+    // reads what the one before wrote, and within a pass every element is independent.
+    auto copy_positions = [&](std::size_t begin, std::size_t end) {
+        for (std::size_t p = begin; p < end; ++p) positions_[p] = glm::vec3(cloth.positions[p]);
+    };
+    auto find_faces = [&](std::size_t begin, std::size_t end) {
+        raster::compute_face_normals(positions_, intact_triangles_, face_normals_, begin, end);
+    };
+    auto gather_normals = [&](std::size_t begin, std::size_t end) {
+        raster::gather_vertex_normals(face_normals_, triangles_around_, normals_, begin, end);
+    };
+    const std::size_t count = positions_.size();
+    constexpr std::size_t min_vertices_for_threads = 4096;
+    if (pool && pool->thread_count() > 1 && count >= min_vertices_for_threads) {
+        pool->parallel_for(count, copy_positions);
+        pool->parallel_for(intact_triangles_.size(), find_faces);
+        pool->parallel_for(count, gather_normals);
+    } else {
+        copy_positions(0, count);
+        find_faces(0, intact_triangles_.size());
+        gather_normals(0, count);
+    }
 }
 
 std::span<const raster::Rgba8> ClothView::particle_colours(const Cloth& cloth) {

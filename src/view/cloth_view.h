@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "parallel/worker_pool.h"
 #include "raster/colour.h"
 #include "raster/mesh.h"
 #include "raster/mesh_renderer.h"
@@ -19,8 +20,9 @@ class ClothView {
     explicit ClothView(const Cloth& cloth);
 
     // Copies positions, recomputes normals and, when springs were torn or cut since the last
-    // call, the triangle and line lists. Allocates only when the topology changed.
-    void update(const Cloth& cloth);
+    // call, the triangle and line lists. Allocates only when the topology changed. With a
+    // pool, the vertices are split between its threads: the same values for any split.
+    void update(const Cloth& cloth, WorkerPool* pool = nullptr);
 
     // The cloth as a mesh: positions, normals, intact triangles, uvs (metres along the cloth).
     raster::MeshView mesh() const;
@@ -53,6 +55,8 @@ class ClothView {
     std::vector<glm::vec3> normals_;
     std::vector<glm::vec2> uvs_;
     std::vector<raster::TriangleIndices> intact_triangles_;
+    raster::VertexTriangles triangles_around_;  // of intact_triangles_, for the normals
+    std::vector<glm::vec3> face_normals_;       // one per intact triangle
     std::vector<raster::LineIndices> wireframe_edges_;
     std::vector<raster::Rgba8> particle_colours_;
     std::vector<raster::LineIndices> spring_lines_;

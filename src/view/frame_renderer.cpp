@@ -58,7 +58,7 @@ void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera
                   float ground_height, std::span<const Collider> colliders, WorkerPool* pool) {
     // Everything shared by the bands is worked out first, once: the view of the cloth, the
     // transformed mesh, the lighting and the per-line colours.
-    view.update(cloth);
+    view.update(cloth, pool);
     raster::Lighting lighting = options.lighting;
     if (options.light_over_shoulder) {
         // A key light above and behind the viewer's right shoulder: whichever side of the

@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -91,6 +93,48 @@ TEST(VertexNormals, UnusedVertexAndBadIndicesGiveZeroWithoutCrashing) {
     const std::vector<glm::vec3> normals = compute_vertex_normals(positions, triangles);
     EXPECT_EQ(normals[3], glm::vec3(0.0f));
     EXPECT_NEAR(normals[0].z, 1.0f, 1e-6f);
+}
+
+TEST(VertexNormals, FacesThenGathersInSlicesEqualTheWholeMeshSums) {
+    // An irregular mesh: a crumpled grid, plus a triangle naming a vertex twice, one with an
+    // index out of range, and a vertex no triangle uses.
+    std::vector<glm::vec3> positions;
+    const int side = 9;
+    for (int j = 0; j < side; ++j)
+        for (int i = 0; i < side; ++i)
+            positions.push_back(
+                {static_cast<float>(i) * 0.37f + 0.05f * std::sin(3.1f * static_cast<float>(j)),
+                 static_cast<float>(j) * 0.29f, 0.2f * std::cos(1.7f * static_cast<float>(i * j))});
+    positions.push_back({5.0f, 5.0f, 5.0f});  // unused
+    std::vector<TriangleIndices> triangles;
+    for (std::uint32_t j = 0; j + 1 < side; ++j) {
+        for (std::uint32_t i = 0; i + 1 < side; ++i) {
+            const std::uint32_t c = j * side + i;
+            triangles.push_back({c, c + 1, c + side});
+            triangles.push_back({c + 1, c + side + 1, c + side});
+        }
+    }
+    triangles.push_back({3, 3, 20});
+    triangles.push_back({4, 5, 1000});
+    const std::vector<glm::vec3> whole = compute_vertex_normals(positions, triangles);
+    VertexTriangles around;
+    find_vertex_triangles(triangles, positions.size(), around);
+    for (std::size_t slice : {std::size_t{1}, std::size_t{7}, positions.size()}) {
+        std::vector<glm::vec3> faces(triangles.size(), glm::vec3(9.0f));
+        for (std::size_t begin = 0; begin < triangles.size(); begin += slice)
+            compute_face_normals(positions, triangles, faces, begin,
+                                 std::min(begin + slice, triangles.size()));
+        std::vector<glm::vec3> gathered(positions.size(), glm::vec3(9.0f));
+        for (std::size_t begin = 0; begin < positions.size(); begin += slice)
+            gather_vertex_normals(faces, around, gathered, begin,
+                                  std::min(begin + slice, positions.size()));
+        for (std::size_t v = 0; v < positions.size(); ++v)
+            for (int k = 0; k < 3; ++k)  // bit for bit: the same sums in the same order
+                EXPECT_EQ(std::bit_cast<std::uint32_t>(gathered[v][k]),
+                          std::bit_cast<std::uint32_t>(whole[v][k]))
+                    << "vertex " << v << ", slices of " << slice;
+    }
+    EXPECT_EQ(whole.back(), glm::vec3(0.0f));
 }
 
 TEST(UniqueEdges, ListsEachEdgeOfAQuadOnce) {

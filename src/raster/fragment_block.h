@@ -29,8 +29,10 @@ inline constexpr int fragment_block_columns = 4;
 inline constexpr int fragment_block_rows = 4;
 inline constexpr int fragment_block_size = fragment_block_columns * fragment_block_rows;
 
-// Where a block's fragments go: room for fragment_block_size of each, in queue order.
-// Lanes past the count returned are written too, with values of no meaning.
+// Where blocks' fragments go (a deferred shader's queue): fragment j of a block written at
+// `offset` lands in pixels[offset + j] and varyings[k][offset + j], with room for
+// fragment_block_size from the offset. Lanes past the count returned are written too, with
+// values of no meaning.
 struct FragmentSink {
     std::uint32_t* pixels;          // framebuffer index (y · width + x)
     float* varyings[max_varyings];  // varying k of the fragments, one array per varying
@@ -67,8 +69,9 @@ inline bool fits_fragment_block(const TriangleSetup& setup) {
 }
 
 // Rows [y, min(y + 4, y_end)) of the triangle: the fragments that pass the depth test, in
-// order, into `sink` (whose depths are written if depth_write). Returns how many.
+// order, into `sink` at `offset` (their depths written if depth_write). Returns how many.
 // Only while avx512_in_use() (vector_isa.h), for a triangle that fits_fragment_block().
-int traverse_fragment_block(const BlockTriangle& triangle, int y, const FragmentSink& sink);
+int traverse_fragment_block(const BlockTriangle& triangle, int y, const FragmentSink& sink,
+                            int offset);
 
 }  // namespace weft::raster

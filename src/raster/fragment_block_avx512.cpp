@@ -14,7 +14,8 @@
 
 namespace weft::raster {
 
-int traverse_fragment_block(const BlockTriangle& triangle, int y, const FragmentSink& sink) {
+int traverse_fragment_block(const BlockTriangle& triangle, int y, const FragmentSink& sink,
+                            int offset) {
     const TriangleSetup& setup = *triangle.setup;
     // Lane l is pixel (x_begin + l % 4, y + l / 4).
     const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
@@ -107,7 +108,7 @@ int traverse_fragment_block(const BlockTriangle& triangle, int y, const Fragment
     const float* const* over_w = triangle.varying_over_w;
     // Most blocks pass a few fragments: then half-width vectors suffice.
     if (count <= 8) {
-        _mm256_storeu_si256(reinterpret_cast<__m256i*>(sink.pixels),
+        _mm256_storeu_si256(reinterpret_cast<__m256i*>(sink.pixels + offset),
                             _mm512_castsi512_si256(packed_pixel));
         const __m256 b0 = _mm512_castps512_ps256(barycentric[0]);
         const __m256 b1 = _mm512_castps512_ps256(barycentric[1]);
@@ -118,13 +119,13 @@ int traverse_fragment_block(const BlockTriangle& triangle, int y, const Fragment
                 _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(b0, _mm256_set1_ps(over_w[0][k])),
                                             _mm256_mul_ps(b1, _mm256_set1_ps(over_w[1][k]))),
                               _mm256_mul_ps(b2, _mm256_set1_ps(over_w[2][k])));
-            _mm256_storeu_ps(sink.varyings[k], _mm256_mul_ps(blended, w8));
+            _mm256_storeu_ps(sink.varyings[k] + offset, _mm256_mul_ps(blended, w8));
         }
     } else {
-        _mm512_storeu_si512(sink.pixels, packed_pixel);
+        _mm512_storeu_si512(sink.pixels + offset, packed_pixel);
         for (int k = 0; k < triangle.varying_count; ++k) {
             _mm512_storeu_ps(
-                sink.varyings[k],
+                sink.varyings[k] + offset,
                 _mm512_mul_ps(blend(over_w[0][k], over_w[1][k], over_w[2][k]), packed_w));
         }
     }
@@ -137,7 +138,7 @@ int traverse_fragment_block(const BlockTriangle& triangle, int y, const Fragment
 
 namespace weft::raster {
 
-int traverse_fragment_block(const BlockTriangle&, int, const FragmentSink&) {
+int traverse_fragment_block(const BlockTriangle&, int, const FragmentSink&, int) {
     return 0;  // never called: avx512_supported() is false in such a build
 }
 

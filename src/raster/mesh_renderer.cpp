@@ -38,6 +38,13 @@ struct SurfaceShader {
         float varyings[varying_count][ShadingLanes::capacity];
         float front[ShadingLanes::capacity];
         ShadingLanes lanes;
+        FragmentSink sink;  // the arrays above, for blocks
+
+        Queue() : sink{pixel, {}} {
+            for (int k = 0; k < varying_count; ++k) sink.varyings[k] = varyings[k];
+        }
+        Queue(const Queue&) = delete;
+        Queue& operator=(const Queue&) = delete;
     };
 
     PreparedSurface surface;
@@ -52,19 +59,18 @@ struct SurfaceShader {
         if (++q.count == ShadingLanes::capacity) flush();
     }
 
-    // Room for a block of fragments (fragment_block.h) at the end of the queue.
-    FragmentSink sink() const {
-        Queue& q = *queue;
-        if (q.count > ShadingLanes::capacity - fragment_block_size) flush();
-        FragmentSink sink{q.pixel + q.count, {}};
-        for (int k = 0; k < varying_count; ++k) sink.varyings[k] = q.varyings[k] + q.count;
-        return sink;
+    // Blocks of fragments (fragment_block.h) go straight into the queue's arrays.
+    const FragmentSink& sink() const { return queue->sink; }
+
+    int reserve() const {
+        if (queue->count > ShadingLanes::capacity - fragment_block_size) flush();
+        return queue->count;
     }
 
     void commit(int count, bool front_facing) const {
         Queue& q = *queue;
-        const float front = front_facing ? 1.0f : 0.0f;
-        for (int i = 0; i < count; ++i) q.front[q.count + i] = front;
+        // All sixteen of the block's slots, whatever the count: no loop to mispredict.
+        std::fill_n(q.front + q.count, fragment_block_size, front_facing ? 1.0f : 0.0f);
         q.count += count;
         if (q.count == ShadingLanes::capacity) flush();  // defer() needs a free slot
     }

@@ -20,8 +20,9 @@
 // writes the colour itself later — in batches, in the order it was given the fragments.
 // A deferred shader that also declares `static constexpr bool takes_fragment_blocks = true;`
 // takes the fragments of small triangles sixteen at a time (fragment_block.h) through
-//     FragmentSink sink()                        room for fragment_block_size more
-//     void commit(int count, bool front_facing)  the first `count` of them are filled in
+//     const FragmentSink& sink()                 its queue's arrays
+//     int reserve()                              the offset of room for fragment_block_size
+//     void commit(int count, bool front_facing)  the first `count` there are filled in
 // and gets exactly the fragments, in exactly the order, that defer() would have been given.
 // Nothing here allocates; the framebuffer, scissor and state are passed in, never global.
 // Both windings are drawn (there is no back-face culling); Fragment::front_facing tells the
@@ -106,9 +107,10 @@ void traverse_blocks(Framebuffer& framebuffer, const RasterState& state, const T
                                  static_cast<std::uint32_t>(framebuffer.width()),
                                  state.depth_test,
                                  state.depth_write};
+    const FragmentSink& sink = shader.sink();
     for (int y = setup.y_begin; y < setup.y_end; y += fragment_block_rows) {
-        const FragmentSink sink = shader.sink();
-        shader.commit(traverse_fragment_block(triangle, y, sink), setup.front_facing);
+        const int offset = shader.reserve();
+        shader.commit(traverse_fragment_block(triangle, y, sink, offset), setup.front_facing);
     }
 }
 

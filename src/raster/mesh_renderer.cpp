@@ -107,6 +107,7 @@ void transform_vertices(const glm::mat4& view_projection, const MeshView& mesh, 
     const glm::mat4 clip_from_model = view_projection * mesh.model;
     const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(mesh.model)));
     const auto stride = static_cast<std::size_t>(prepared.varying_stride);
+    const bool model_is_world = mesh.model == glm::mat4(1.0f);
     for (std::size_t i = begin; i < end; ++i) {
         const glm::vec4 model_position(mesh.positions[i], 1.0f);
         ClipVertex& vertex = prepared.vertices[i];
@@ -115,8 +116,10 @@ void transform_vertices(const glm::mat4& view_projection, const MeshView& mesh, 
         // What setup would compute for this corner of each of its triangles, once.
         if ((prepared.outcodes[i] & clipping_planes) == 0)
             prepared.window[i] = window_vertex(vertex.position, prepared.width, prepared.height);
-        const glm::vec3 world(mesh.model * model_position);
-        const glm::vec3 normal = normal_matrix * mesh.normals[i];
+        // A cloth is given in world space: no product by an identity matrix for it.
+        const glm::vec3 world =
+            model_is_world ? mesh.positions[i] : glm::vec3(mesh.model * model_position);
+        const glm::vec3 normal = model_is_world ? mesh.normals[i] : normal_matrix * mesh.normals[i];
         float* v = vertex.varyings.data();
         for (int k = 0; k < 3; ++k) {
             v[position_slot + k] = world[k];

@@ -100,42 +100,48 @@ struct SurfaceShader {
 };
 
 // Transform: every vertex once, to clip space for the rasterizer and to world space for
-// lighting, with its outcode (so culling a triangle is three ANDs) and its window row (so a
-// band rejects a triangle with two comparisons). Vertices [begin, end).
-void transform_vertices(const glm::mat4& view_projection, const MeshView& mesh, int colour_slot,
+// lighting, with its outcode (so culling a triangle is three ANDs), its window position (so
+// setup and binning need no divide) and its varyings divided by w (what the rasterizer
+// interpolates). Vertices [begin, end), in the layout of SurfaceShader<HasUv, HasColour>.
+template <bool HasUv, bool HasColour>
+void transform_vertices(const glm::mat4& view_projection, const MeshView& mesh,
                         PreparedMesh& prepared, std::size_t begin, std::size_t end) {
+    using Shader = SurfaceShader<HasUv, HasColour>;
+    constexpr int varying_count = Shader::varying_count;
     const glm::mat4 clip_from_model = view_projection * mesh.model;
     const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(mesh.model)));
-    const auto stride = static_cast<std::size_t>(prepared.varying_stride);
     const bool model_is_world = mesh.model == glm::mat4(1.0f);
     for (std::size_t i = begin; i < end; ++i) {
         const glm::vec4 model_position(mesh.positions[i], 1.0f);
-        ClipVertex& vertex = prepared.vertices[i];
-        vertex.position = clip_from_model * model_position;
-        prepared.outcodes[i] = clip_outcode(vertex.position);
-        // What setup would compute for this corner of each of its triangles, once.
-        if ((prepared.outcodes[i] & clipping_planes) == 0)
-            prepared.window[i] = window_vertex(vertex.position, prepared.width, prepared.height);
+        const glm::vec4 clip = clip_from_model * model_position;
         // A cloth is given in world space: no product by an identity matrix for it.
         const glm::vec3 world =
             model_is_world ? mesh.positions[i] : glm::vec3(mesh.model * model_position);
         const glm::vec3 normal = model_is_world ? mesh.normals[i] : normal_matrix * mesh.normals[i];
-        float* v = vertex.varyings.data();
+        float varyings[varying_count];
         for (int k = 0; k < 3; ++k) {
-            v[position_slot + k] = world[k];
-            v[normal_slot + k] = normal[k];
+            varyings[position_slot + k] = world[k];
+            varyings[normal_slot + k] = normal[k];
         }
-        if (prepared.with_uv) {
-            v[uv_slot] = mesh.uvs[i].x;
-            v[uv_slot + 1] = mesh.uvs[i].y;
+        if constexpr (HasUv) {
+            varyings[uv_slot] = mesh.uvs[i].x;
+            varyings[uv_slot + 1] = mesh.uvs[i].y;
         }
-        if (colour_slot >= 0) {
-            for (int k = 0; k < 3; ++k) v[colour_slot + k] = mesh.colours[i][k];
+        if constexpr (HasColour) {
+            for (int k = 0; k < 3; ++k) varyings[Shader::colour_slot + k] = mesh.colours[i][k];
         }
-        if ((prepared.outcodes[i] & clipping_planes) == 0) {
-            const float inverse_w = prepared.window[i].inverse_w;
-            float* over_w = prepared.varyings_over_w.data() + i * stride;
-            for (std::size_t k = 0; k < stride; ++k) over_w[k] = v[k] * inverse_w;
+
+        ClipVertex& vertex = prepared.vertices[i];
+        vertex.position = clip;
+        std::copy_n(varyings, varying_count, vertex.varyings.begin());
+        const std::uint32_t outcode = clip_outcode(clip);
+        prepared.outcodes[i] = outcode;
+        // What setup would compute for this corner of each of its triangles, once.
+        if ((outcode & clipping_planes) == 0) {
+            const WindowVertex window = window_vertex(clip, prepared.width, prepared.height);
+            prepared.window[i] = window;
+            float* over_w = prepared.varyings_over_w.data() + i * varying_count;
+            for (int k = 0; k < varying_count; ++k) over_w[k] = varyings[k] * window.inverse_w;
         }
     }
 }
@@ -256,9 +262,6 @@ bool prepare_mesh(const Camera& camera, int width, int height, const MeshView& m
     prepared.eye = camera.position;
     prepared.with_uv = style.pattern != SurfacePattern::none && !mesh.uvs.empty();
     prepared.with_colour = !mesh.colours.empty();
-    const int colour_slot = !prepared.with_colour ? -1
-                            : prepared.with_uv    ? SurfaceShader<true, true>::colour_slot
-                                                  : SurfaceShader<false, true>::colour_slot;
     prepared.varying_stride =
         prepared.with_uv ? (prepared.with_colour ? SurfaceShader<true, true>::varying_count
                                                  : SurfaceShader<true, false>::varying_count)
@@ -266,15 +269,22 @@ bool prepare_mesh(const Camera& camera, int width, int height, const MeshView& m
                                                  : SurfaceShader<false, false>::varying_count);
     prepared.varyings_over_w.resize(count * static_cast<std::size_t>(prepared.varying_stride));
     const glm::mat4 view_projection = view_projection_matrix(camera, width, height);
+    auto transform = [&](std::size_t begin, std::size_t end) {
+        if (prepared.with_uv && prepared.with_colour)
+            transform_vertices<true, true>(view_projection, mesh, prepared, begin, end);
+        else if (prepared.with_uv)
+            transform_vertices<true, false>(view_projection, mesh, prepared, begin, end);
+        else if (prepared.with_colour)
+            transform_vertices<false, true>(view_projection, mesh, prepared, begin, end);
+        else
+            transform_vertices<false, false>(view_projection, mesh, prepared, begin, end);
+    };
     // Each vertex is written by one slice: the same values for any split.
     constexpr std::size_t min_vertices_for_threads = 4096;
-    if (pool && pool->thread_count() > 1 && count >= min_vertices_for_threads) {
-        pool->parallel_for(count, [&](std::size_t begin, std::size_t end) {
-            transform_vertices(view_projection, mesh, colour_slot, prepared, begin, end);
-        });
-    } else {
-        transform_vertices(view_projection, mesh, colour_slot, prepared, 0, count);
-    }
+    if (pool && pool->thread_count() > 1 && count >= min_vertices_for_threads)
+        pool->parallel_for(count, transform);
+    else
+        transform(0, count);
     return true;
 }
 

@@ -118,13 +118,16 @@ void shade_batch_body(const PreparedSurface& surface, const SurfaceBatch& batch,
         lanes.eye_z[i] = away ? tz * inverse_distance : 0.0f;
     }
     shade_lanes_body(surface.lighting, lanes, count);
-    // Rounded to 8 bits over the whole batch, then written in order.
-    std::uint8_t red[ShadingLanes::capacity], green[ShadingLanes::capacity],
-        blue[ShadingLanes::capacity];
+    // Rounded to 8 bits and packed as the framebuffer lays out a pixel (r, g, b, a in
+    // ascending addresses: a little-endian word), over the whole batch; then one 32-bit
+    // store per pixel, in order.
+    static_assert(sizeof(Rgba8) == 4 && std::endian::native == std::endian::little);
+    std::uint32_t packed[ShadingLanes::capacity];
     for (int i = 0; i < count; ++i) {
-        red[i] = to_channel(lanes.lit_r[i]);
-        green[i] = to_channel(lanes.lit_g[i]);
-        blue[i] = to_channel(lanes.lit_b[i]);
+        packed[i] = std::uint32_t{to_channel(lanes.lit_r[i])} |
+                    std::uint32_t{to_channel(lanes.lit_g[i])} << 8 |
+                    std::uint32_t{to_channel(lanes.lit_b[i])} << 16 | std::uint32_t{255} << 24;
     }
-    for (int i = 0; i < count; ++i) colours[batch.pixels[i]] = {red[i], green[i], blue[i], 255};
+    for (int i = 0; i < count; ++i)
+        std::memcpy(static_cast<void*>(colours + batch.pixels[i]), packed + i, sizeof(Rgba8));
 }

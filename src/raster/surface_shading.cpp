@@ -1,7 +1,9 @@
 #include "raster/surface_shading.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstring>
 
 #include <glm/geometric.hpp>
 

@@ -2,8 +2,10 @@
 // instruction. This file alone gets the instruction set (CMakeLists.txt) and runs only where
 // the CPU has it (vector_isa.h).
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 #include "raster/surface_shading.h"
 

@@ -1,6 +1,7 @@
 #include "raster/mesh_renderer.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -223,6 +224,14 @@ void bin_triangle_run(const PreparedMesh& prepared, std::size_t begin, std::size
     const PixelRect viewport{0, 0, prepared.width, prepared.height};
     std::vector<std::uint32_t>* lists = bands.lists.data() + slice * bands.band_count;
     const std::int64_t rows_per_band = std::int64_t{bands.band_height} * subpixel_scale;
+    // The band of a non-negative window row: a shift when bands are a power of two rows
+    // high (the frame's are), since a 64-bit division per corner took a sixth of binning.
+    const int band_shift = std::has_single_bit(static_cast<std::uint64_t>(rows_per_band))
+                               ? std::countr_zero(static_cast<std::uint64_t>(rows_per_band))
+                               : -1;
+    auto band_of = [&](std::int64_t row) {
+        return static_cast<int>(band_shift >= 0 ? row >> band_shift : row / rows_per_band);
+    };
     for (std::size_t index = begin; index < end; ++index) {
         const TriangleIndices& t = prepared.triangles[index];
         if (t[0] >= count || t[1] >= count || t[2] >= count) continue;
@@ -236,9 +245,8 @@ void bin_triangle_run(const PreparedMesh& prepared, std::size_t begin, std::size
             // are), with the draw's own pixel of margin.
             const std::int64_t top = std::min({a.y, b.y, c.y}) - subpixel_scale;
             const std::int64_t bottom = std::max({a.y, b.y, c.y}) + subpixel_scale;
-            first = static_cast<int>(std::max<std::int64_t>(top, 0) / rows_per_band);
-            last = static_cast<int>(std::min<std::int64_t>(
-                std::max<std::int64_t>(bottom, 0) / rows_per_band, bands.band_count - 1));
+            first = band_of(std::max<std::int64_t>(top, 0));
+            last = std::min(band_of(std::max<std::int64_t>(bottom, 0)), bands.band_count - 1);
         }
         for (int band = first; band <= last; ++band)
             lists[band].push_back(static_cast<std::uint32_t>(index));

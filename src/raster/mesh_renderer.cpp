@@ -100,51 +100,65 @@ struct SurfaceShader {
     }
 };
 
-// Transform: every vertex once, to clip space for the rasterizer and to world space for
-// lighting, with its outcode (so culling a triangle is three ANDs), its window position (so
-// setup and binning need no divide) and its varyings divided by w (what the rasterizer
-// interpolates). Vertices [begin, end), in the layout of SurfaceShader<HasUv, HasColour>.
+// Vertex i's varyings in the layout of SurfaceShader<HasUv, HasColour>: its world position
+// and normal (a cloth is given in world space: no product by an identity matrix for it),
+// then its uv and colour.
 template <bool HasUv, bool HasColour>
-void transform_vertices(const glm::mat4& view_projection, const MeshView& mesh,
-                        PreparedMesh& prepared, std::size_t begin, std::size_t end) {
-    using Shader = SurfaceShader<HasUv, HasColour>;
-    constexpr int varying_count = Shader::varying_count;
-    const glm::mat4 clip_from_model = view_projection * mesh.model;
-    const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(mesh.model)));
-    const bool model_is_world = mesh.model == glm::mat4(1.0f);
-    for (std::size_t i = begin; i < end; ++i) {
-        const glm::vec4 model_position(mesh.positions[i], 1.0f);
-        const glm::vec4 clip = clip_from_model * model_position;
-        // A cloth is given in world space: no product by an identity matrix for it.
-        const glm::vec3 world =
-            model_is_world ? mesh.positions[i] : glm::vec3(mesh.model * model_position);
-        const glm::vec3 normal = model_is_world ? mesh.normals[i] : normal_matrix * mesh.normals[i];
-        float varyings[varying_count];
-        for (int k = 0; k < 3; ++k) {
-            varyings[position_slot + k] = world[k];
-            varyings[normal_slot + k] = normal[k];
-        }
-        if constexpr (HasUv) {
-            varyings[uv_slot] = mesh.uvs[i].x;
-            varyings[uv_slot + 1] = mesh.uvs[i].y;
-        }
-        if constexpr (HasColour) {
-            for (int k = 0; k < 3; ++k) varyings[Shader::colour_slot + k] = mesh.colours[i][k];
-        }
+void vertex_varyings(const PreparedMesh& prepared, std::size_t i, float* varyings) {
+    const MeshView& mesh = prepared.mesh;
+    const glm::vec3 world = prepared.model_is_world
+                                ? mesh.positions[i]
+                                : glm::vec3(mesh.model * glm::vec4(mesh.positions[i], 1.0f));
+    const glm::vec3 normal =
+        prepared.model_is_world ? mesh.normals[i] : prepared.normal_matrix * mesh.normals[i];
+    for (int k = 0; k < 3; ++k) {
+        varyings[position_slot + k] = world[k];
+        varyings[normal_slot + k] = normal[k];
+    }
+    if constexpr (HasUv) {
+        varyings[uv_slot] = mesh.uvs[i].x;
+        varyings[uv_slot + 1] = mesh.uvs[i].y;
+    }
+    if constexpr (HasColour) {
+        for (int k = 0; k < 3; ++k)
+            varyings[SurfaceShader<HasUv, HasColour>::colour_slot + k] = mesh.colours[i][k];
+    }
+}
 
-        ClipVertex& vertex = prepared.vertices[i];
-        vertex.position = clip;
-        std::copy_n(varyings, varying_count, vertex.varyings.begin());
+// Transform: every vertex once, to clip space, with its outcode (so culling a triangle is
+// three ANDs), its window position (so setup and binning need no divide) and its varyings
+// divided by w (what the rasterizer interpolates). Vertices [begin, end). The varyings
+// themselves are not kept: only a triangle that needs clipping uses them, and it computes
+// them again (clip_vertex below) — writing them for every vertex was a third of this pass.
+template <bool HasUv, bool HasColour>
+void transform_vertices(const glm::mat4& view_projection, PreparedMesh& prepared, std::size_t begin,
+                        std::size_t end) {
+    constexpr int varying_count = SurfaceShader<HasUv, HasColour>::varying_count;
+    const glm::mat4 clip_from_model = view_projection * prepared.mesh.model;
+    for (std::size_t i = begin; i < end; ++i) {
+        const glm::vec4 clip = clip_from_model * glm::vec4(prepared.mesh.positions[i], 1.0f);
+        prepared.clip[i] = clip;
         const std::uint32_t outcode = clip_outcode(clip);
         prepared.outcodes[i] = outcode;
         // What setup would compute for this corner of each of its triangles, once.
         if ((outcode & clipping_planes) == 0) {
+            float varyings[varying_count];
+            vertex_varyings<HasUv, HasColour>(prepared, i, varyings);
             const WindowVertex window = window_vertex(clip, prepared.width, prepared.height);
             prepared.window[i] = window;
             float* over_w = prepared.varyings_over_w.data() + i * varying_count;
             for (int k = 0; k < varying_count; ++k) over_w[k] = varyings[k] * window.inverse_w;
         }
     }
+}
+
+// Vertex i as the clipper takes it: clip position and varyings.
+template <bool HasUv, bool HasColour>
+ClipVertex clip_vertex(const PreparedMesh& prepared, std::size_t i) {
+    ClipVertex vertex;
+    vertex.position = prepared.clip[i];
+    vertex_varyings<HasUv, HasColour>(prepared, i, vertex.varyings.data());
+    return vertex;
 }
 
 // Draws the triangles `for_each_triangle` visits (it calls its argument with each index,
@@ -154,8 +168,7 @@ void draw_prepared_with(Framebuffer& framebuffer, const PreparedMesh& prepared,
                         const SurfaceStyle& style, const Lighting& lighting,
                         const PixelRect& scissor, TriangleVisitor&& for_each_triangle) {
     using Shader = SurfaceShader<HasUv, HasColour>;
-    const std::size_t count = prepared.vertices.size();
-    const ClipVertex* vertices = prepared.vertices.data();
+    const std::size_t count = prepared.clip.size();
     const std::uint32_t* outcodes = prepared.outcodes.data();
     const WindowVertex* window = prepared.window.data();
     const TriangleIndices* triangles = prepared.triangles.data();
@@ -179,17 +192,20 @@ void draw_prepared_with(Framebuffer& framebuffer, const PreparedMesh& prepared,
         if (t[0] >= count || t[1] >= count || t[2] >= count) return;
         const TriangleOutcodes codes{outcodes[t[0]], outcodes[t[1]], outcodes[t[2]]};
         if (codes.culled()) return;
-        if (!codes.needs_clipping()) {
-            const std::int64_t y0 = window[t[0]].y, y1 = window[t[1]].y, y2 = window[t[2]].y;
-            if ((y0 < band_top && y1 < band_top && y2 < band_top) ||
-                (y0 > band_bottom && y1 > band_bottom && y2 > band_bottom))
-                return;
+        if (codes.needs_clipping()) {
+            draw_triangle(framebuffer, state, clip_vertex<HasUv, HasColour>(prepared, t[0]),
+                          clip_vertex<HasUv, HasColour>(prepared, t[1]),
+                          clip_vertex<HasUv, HasColour>(prepared, t[2]), codes, shader);
+            return;
         }
+        const WindowVertex &a = window[t[0]], &b = window[t[1]], &c = window[t[2]];
+        if ((a.y < band_top && b.y < band_top && c.y < band_top) ||
+            (a.y > band_bottom && b.y > band_bottom && c.y > band_bottom))
+            return;
         const float* const over_w[3] = {varyings_over_w + t[0] * stride,
                                         varyings_over_w + t[1] * stride,
                                         varyings_over_w + t[2] * stride};
-        draw_triangle(framebuffer, state, vertices[t[0]], vertices[t[1]], vertices[t[2]],
-                      window[t[0]], window[t[1]], window[t[2]], over_w, codes, shader);
+        draw_prepared_triangle(framebuffer, state, a, b, c, over_w, shader);
     });
     shader.flush();
 }
@@ -218,7 +234,7 @@ void draw_prepared_triangles(Framebuffer& framebuffer, const PreparedMesh& prepa
 // Triangles [begin, end) into the bands they may reach: lists[slice * band_count + band].
 void bin_triangle_run(const PreparedMesh& prepared, std::size_t begin, std::size_t end, int slice,
                       TriangleBands& bands) {
-    const std::size_t count = prepared.vertices.size();
+    const std::size_t count = prepared.clip.size();
     const std::uint32_t* outcodes = prepared.outcodes.data();
     const WindowVertex* window = prepared.window.data();
     const PixelRect viewport{0, 0, prepared.width, prepared.height};
@@ -261,8 +277,11 @@ bool prepare_mesh(const Camera& camera, int width, int height, const MeshView& m
     if (mesh.normals.size() != count) return false;
     if (!mesh.uvs.empty() && mesh.uvs.size() != count) return false;
     if (!mesh.colours.empty() && mesh.colours.size() != count) return false;
+    prepared.mesh = mesh;
     prepared.triangles = mesh.triangles;
-    prepared.vertices.resize(count);
+    prepared.normal_matrix = glm::transpose(glm::inverse(glm::mat3(mesh.model)));
+    prepared.model_is_world = mesh.model == glm::mat4(1.0f);
+    prepared.clip.resize(count);
     prepared.outcodes.resize(count);
     prepared.window.resize(count);
     prepared.width = width;
@@ -279,13 +298,13 @@ bool prepare_mesh(const Camera& camera, int width, int height, const MeshView& m
     const glm::mat4 view_projection = view_projection_matrix(camera, width, height);
     auto transform = [&](std::size_t begin, std::size_t end) {
         if (prepared.with_uv && prepared.with_colour)
-            transform_vertices<true, true>(view_projection, mesh, prepared, begin, end);
+            transform_vertices<true, true>(view_projection, prepared, begin, end);
         else if (prepared.with_uv)
-            transform_vertices<true, false>(view_projection, mesh, prepared, begin, end);
+            transform_vertices<true, false>(view_projection, prepared, begin, end);
         else if (prepared.with_colour)
-            transform_vertices<false, true>(view_projection, mesh, prepared, begin, end);
+            transform_vertices<false, true>(view_projection, prepared, begin, end);
         else
-            transform_vertices<false, false>(view_projection, mesh, prepared, begin, end);
+            transform_vertices<false, false>(view_projection, prepared, begin, end);
     };
     // Each vertex is written by one slice: the same values for any split.
     constexpr std::size_t min_vertices_for_threads = 4096;

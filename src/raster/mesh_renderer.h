@@ -12,8 +12,10 @@
 #include <span>
 #include <vector>
 
+#include <glm/mat3x3.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "parallel/worker_pool.h"
 #include "raster/camera.h"
@@ -67,13 +69,17 @@ bool draw_mesh(Framebuffer& framebuffer, const Camera& camera, const MeshView& m
                const PixelRect& scissor = PixelRect::unbounded());
 
 // A mesh's vertices transformed once for one camera and framebuffer size — clip position,
-// world-space varyings, frustum outcodes and snapped window position — so that one draw can be
+// frustum outcodes, snapped window position and varyings divided by w — so that one draw can be
 // split into bands of the framebuffer, drawn by several threads, without transforming twice. It
-// refers to the mesh's triangles, so the MeshView's arrays must outlive it. Kept between frames, it
-// allocates only when the mesh grows.
+// refers to the mesh's arrays (a triangle that needs clipping takes its varyings from them), so
+// the MeshView's arrays must outlive it. Kept between frames, it allocates only when the mesh
+// grows.
 struct PreparedMesh {
+    MeshView mesh;
     std::span<const TriangleIndices> triangles;
-    std::vector<ClipVertex> vertices;
+    glm::mat3 normal_matrix{1.0f};  // of mesh.model
+    bool model_is_world = true;     // mesh.model is the identity
+    std::vector<glm::vec4> clip;    // each vertex in clip space
     std::vector<std::uint32_t> outcodes;
     // Each vertex through the divide, viewport and snap (meaningless where it needs clipping).
     std::vector<WindowVertex> window;

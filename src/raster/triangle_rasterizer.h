@@ -119,9 +119,13 @@ void traverse_blocks(Framebuffer& framebuffer, const RasterState& state, const T
 // Everything the loop reads is copied into locals first: colour stores go through unsigned
 // char, which may alias anything, so values read through a reference would be reloaded
 // after every pixel written.
+//
+// Its varyings come as each setup vertex's varyings divided by its w: a/w and 1/w are affine
+// in screen space, so their barycentric blend divided by the blended 1/w is the
+// perspective-correct value (the same trick GPUs use).
 template <class Shader>
 void traverse_and_shade(Framebuffer& framebuffer, const RasterState& state,
-                        const TriangleSetup& setup, const ClipVertex* const (&vertex)[3],
+                        const TriangleSetup& setup, const float* const (&given_over_w)[3],
                         Shader& shader) {
     const std::size_t width = static_cast<std::size_t>(framebuffer.width());
     Rgba8* const colours = framebuffer.colours().data();
@@ -143,23 +147,15 @@ void traverse_and_shade(Framebuffer& framebuffer, const RasterState& state,
     const float inverse_w0 = setup.inverse_w[0], inverse_w1 = setup.inverse_w[1],
                 inverse_w2 = setup.inverse_w[2];
 
-    // Per-vertex varyings in setup order, pre-divided by w: a/w and 1/w are affine in screen
-    // space, so their barycentric blend divided by the blended 1/w is the perspective-correct
-    // value (the same trick GPUs use).
-    std::array<std::array<float, max_varyings>, 3> varying_over_w;
-    for (int i = 0; i < 3; ++i) {
-        for (int k = 0; k < varying_count; ++k) {
-            varying_over_w[i][k] = vertex[i]->varyings[k] * setup.inverse_w[i];
-        }
-    }
     if constexpr (takes_fragment_blocks<Shader>()) {
         if (avx512_in_use() && fits_fragment_block(setup)) {
-            const float* const ordered[3] = {varying_over_w[0].data(), varying_over_w[1].data(),
-                                             varying_over_w[2].data()};
-            traverse_blocks(framebuffer, state, setup, ordered, varying_count, shader);
+            traverse_blocks(framebuffer, state, setup, given_over_w, varying_count, shader);
             return;
         }
     }
+    std::array<std::array<float, max_varyings>, 3> varying_over_w;
+    for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < varying_count; ++k) varying_over_w[i][k] = given_over_w[i][k];
 
     std::array<float, max_varyings> varyings;  // the first varying_count are set per pixel
     Fragment fragment;
@@ -241,8 +237,15 @@ void traverse_set_up(Framebuffer& framebuffer, const RasterState& state, const T
                      const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
                      Shader& shader) {
     const ClipVertex* const input[3] = {&a, &b, &c};
-    const ClipVertex* const ordered[3] = {
-        input[setup.vertex_order[0]], input[setup.vertex_order[1]], input[setup.vertex_order[2]]};
+    constexpr int fixed_varying_count = static_varying_count<Shader>();
+    const int varying_count = fixed_varying_count >= 0 ? fixed_varying_count : state.varying_count;
+    std::array<std::array<float, max_varyings>, 3> over_w;
+    for (int i = 0; i < 3; ++i) {
+        const ClipVertex& vertex = *input[setup.vertex_order[i]];
+        for (int k = 0; k < varying_count; ++k)
+            over_w[i][k] = vertex.varyings[k] * setup.inverse_w[i];
+    }
+    const float* const ordered[3] = {over_w[0].data(), over_w[1].data(), over_w[2].data()};
     traverse_and_shade(framebuffer, state, setup, ordered, shader);
 }
 
@@ -290,38 +293,22 @@ void draw_triangle(Framebuffer& framebuffer, const RasterState& state, const Cli
     }
 }
 
-// The same for a triangle of a prepared mesh, whose vertices the caller has also taken
-// through the divide, viewport and snap (window_vertex: used unless the triangle needs
-// clipping) and whose varyings it has divided by w (varying_over_w[i] for vertex i: the
-// state's varying count of them, each the vertex's varying times its window inverse_w), and
-// whose state has its scissor already inside the framebuffer and its varying count in range.
+// A triangle of a prepared mesh that needs no clipping: its vertices the caller has taken
+// through the divide, viewport and snap (window_vertex), and their varyings divided by w
+// (varying_over_w[i] for vertex i: the state's varying count of them, each the vertex's
+// varying times its window inverse_w). The state has its scissor already inside the
+// framebuffer and its varying count in range.
 template <class Shader>
-void draw_triangle(Framebuffer& framebuffer, const RasterState& state, const ClipVertex& a,
-                   const ClipVertex& b, const ClipVertex& c, const WindowVertex& window_a,
-                   const WindowVertex& window_b, const WindowVertex& window_c,
-                   const float* const (&varying_over_w)[3], const TriangleOutcodes& outcodes,
-                   Shader&& shader) {
-    if (outcodes.culled()) return;
-    if (outcodes.needs_clipping()) {
-        draw_triangle(framebuffer, state, a, b, c, outcodes, shader);
-        return;
-    }
+void draw_prepared_triangle(Framebuffer& framebuffer, const RasterState& state,
+                            const WindowVertex& window_a, const WindowVertex& window_b,
+                            const WindowVertex& window_c, const float* const (&varying_over_w)[3],
+                            Shader&& shader) {
     TriangleSetup setup;
     if (!setup_triangle(window_a, window_b, window_c, state.scissor, setup)) return;
-    if constexpr (detail::takes_fragment_blocks<Shader>()) {
-        // Small triangles straight to the blocks, with the caller's divided varyings.
-        if (avx512_in_use() && fits_fragment_block(setup)) {
-            const float* const ordered[3] = {varying_over_w[setup.vertex_order[0]],
-                                             varying_over_w[setup.vertex_order[1]],
-                                             varying_over_w[setup.vertex_order[2]]};
-            constexpr int varying_count = detail::static_varying_count<Shader>();
-            detail::traverse_blocks(framebuffer, state, setup, ordered,
-                                    varying_count >= 0 ? varying_count : state.varying_count,
-                                    shader);
-            return;
-        }
-    }
-    detail::traverse_set_up(framebuffer, state, setup, a, b, c, shader);
+    const float* const ordered[3] = {varying_over_w[setup.vertex_order[0]],
+                                     varying_over_w[setup.vertex_order[1]],
+                                     varying_over_w[setup.vertex_order[2]]};
+    detail::traverse_and_shade(framebuffer, state, setup, ordered, shader);
 }
 
 template <class Shader>

@@ -2,12 +2,13 @@
 //
 // A 128² cloth across a tenth of a 1280×720 screen is 34 000 triangles of about three pixels
 // each: its pixel loop is almost all per-triangle and per-row overhead, and the branches of
-// a scalar walk over a 3×3 box (inside this edge? this row? passes the depth test?) go one way
-// or the other at random, so the processor mispredicts several per triangle. A triangle whose
-// box is at most four pixels wide is instead taken four rows at a time as one block of 4×4
-// lanes: coverage, depth, the depth test and the perspective-correct varyings are computed
-// for all sixteen lanes at once, and the fragments that pass are packed into the deferred
-// shader's queue (triangle_rasterizer.h) with no branch per pixel.
+// a scalar walk over a 3×3 box (inside this edge? this row? passes the depth test?) follow
+// each triangle's shape, which changes from one triangle to the next. A triangle whose box is
+// at most four pixels wide is instead taken four rows at a time as one block of 4×4 lanes:
+// coverage, depth, the depth test and the perspective-correct varyings are computed for all
+// sixteen lanes at once, and the fragments that pass are packed into the deferred shader's
+// queue (triangle_rasterizer.h) with no branch per pixel. Drawing the demo's view of that
+// cloth on one thread took 3.31 ms this way against 3.60 ms pixel by pixel (docs/performance.md).
 //
 // Every lane computes exactly what the scalar pixel loop computes — the same integer edge
 // functions, the same float operations in the same order, no fused multiply-add — and the

@@ -171,7 +171,7 @@ void draw_prepared_with(Framebuffer& framebuffer, const PreparedMesh& prepared,
     const std::size_t count = prepared.clip.size();
     const std::uint32_t* outcodes = prepared.outcodes.data();
     const WindowVertex* window = prepared.window.data();
-    const TriangleIndices* triangles = prepared.triangles.data();
+    const TriangleIndices* triangles = prepared.mesh.triangles.data();
     const float* varyings_over_w = prepared.varyings_over_w.data();
     const auto stride = static_cast<std::size_t>(prepared.varying_stride);
     const PixelRect bounds = scissor.intersect(framebuffer.bounds());
@@ -249,7 +249,7 @@ void bin_triangle_run(const PreparedMesh& prepared, std::size_t begin, std::size
         return static_cast<int>(band_shift >= 0 ? row >> band_shift : row / rows_per_band);
     };
     for (std::size_t index = begin; index < end; ++index) {
-        const TriangleIndices& t = prepared.triangles[index];
+        const TriangleIndices& t = prepared.mesh.triangles[index];
         if (t[0] >= count || t[1] >= count || t[2] >= count) continue;
         const TriangleOutcodes codes{outcodes[t[0]], outcodes[t[1]], outcodes[t[2]]};
         if (codes.culled()) continue;
@@ -278,7 +278,6 @@ bool prepare_mesh(const Camera& camera, int width, int height, const MeshView& m
     if (!mesh.uvs.empty() && mesh.uvs.size() != count) return false;
     if (!mesh.colours.empty() && mesh.colours.size() != count) return false;
     prepared.mesh = mesh;
-    prepared.triangles = mesh.triangles;
     prepared.normal_matrix = glm::transpose(glm::inverse(glm::mat3(mesh.model)));
     prepared.model_is_world = mesh.model == glm::mat4(1.0f);
     prepared.clip.resize(count);
@@ -319,7 +318,7 @@ void draw_prepared_mesh(Framebuffer& framebuffer, const PreparedMesh& prepared,
                         const SurfaceStyle& style, const Lighting& lighting,
                         const PixelRect& scissor) {
     draw_prepared_triangles(framebuffer, prepared, style, lighting, scissor, [&](auto&& draw) {
-        for (std::size_t index = 0; index < prepared.triangles.size(); ++index) draw(index);
+        for (std::size_t index = 0; index < prepared.mesh.triangles.size(); ++index) draw(index);
     });
 }
 
@@ -332,7 +331,7 @@ void bin_triangles(const PreparedMesh& prepared, int band_height, TriangleBands&
                    WorkerPool* pool) {
     bands.band_height = std::max(band_height, 1);
     bands.band_count = std::max((prepared.height + bands.band_height - 1) / bands.band_height, 1);
-    const std::size_t triangle_count = prepared.triangles.size();
+    const std::size_t triangle_count = prepared.mesh.triangles.size();
     constexpr std::size_t min_triangles_for_threads = 4096;
     const bool threaded =
         pool && pool->thread_count() > 1 && triangle_count >= min_triangles_for_threads;

@@ -76,7 +76,6 @@ bool draw_mesh(Framebuffer& framebuffer, const Camera& camera, const MeshView& m
 // grows.
 struct PreparedMesh {
     MeshView mesh;
-    std::span<const TriangleIndices> triangles;
     glm::mat3 normal_matrix{1.0f};  // of mesh.model
     bool model_is_world = true;     // mesh.model is the identity
     std::vector<glm::vec4> clip;    // each vertex in clip space

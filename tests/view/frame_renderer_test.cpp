@@ -80,13 +80,13 @@ TEST(FrameRenderer, ALargeSheetSeenFromInsideIsTheSameOnAnyThreadCount) {
     raster::PreparedMesh prepared;
     ASSERT_TRUE(raster::prepare_mesh(scene_camera(scene), 400, 300, view.mesh(),
                                      FrameOptions::default_surface(), prepared));
-    const auto clipped = std::count_if(prepared.triangles.begin(), prepared.triangles.end(),
-                                       [&](const raster::TriangleIndices& t) {
-                                           return raster::TriangleOutcodes{prepared.outcodes[t[0]],
-                                                                           prepared.outcodes[t[1]],
-                                                                           prepared.outcodes[t[2]]}
-                                               .needs_clipping();
-                                       });
+    const auto clipped = std::count_if(
+        prepared.mesh.triangles.begin(), prepared.mesh.triangles.end(),
+        [&](const raster::TriangleIndices& t) {
+            return raster::TriangleOutcodes{prepared.outcodes[t[0]], prepared.outcodes[t[1]],
+                                            prepared.outcodes[t[2]]}
+                .needs_clipping();
+        });
     EXPECT_GT(clipped, 0);
     for (int threads : {2, 3}) {
         WorkerPool pool(threads);

@@ -4,7 +4,6 @@
 // what the PNG or the window shows.
 #pragma once
 
-#include <algorithm>
 #include <cstdint>
 
 #include <glm/vec3.hpp>

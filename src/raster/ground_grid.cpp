@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
+
 #include <glm/geometric.hpp>
 
 namespace weft::raster {
@@ -26,15 +28,23 @@ void draw_plane_grid(Framebuffer& framebuffer, const Camera& camera, const Plane
     const glm::vec3 corner = grid.centre - half_extent * (grid.axis_u + grid.axis_v);
     const glm::vec3 along_u = 2.0f * half_extent * grid.axis_u;
     const glm::vec3 along_v = 2.0f * half_extent * grid.axis_v;
-    LineSegment segments[2];
+    // All the lines in one call, a batch at a time: each call works out the camera's
+    // matrices again, and a frame drawn in 23 bands drew the ground grid's 42 lines in 21
+    // calls per band.
+    constexpr int batch_lines = 64;
+    LineSegment segments[batch_lines];
+    int queued = 0;
     for (int i = 0; i <= cells; ++i) {
         const float offset = static_cast<float>(i) * grid.cell_size;
         const Rgba8 colour = 2 * i == cells ? grid.centre_colour : grid.colour;
         const glm::vec3 u_line = corner + offset * grid.axis_u;  // a line along v at this u
         const glm::vec3 v_line = corner + offset * grid.axis_v;  // a line along u at this v
-        segments[0] = {u_line, u_line + along_v, colour, colour};
-        segments[1] = {v_line, v_line + along_u, colour, colour};
-        draw_lines(framebuffer, camera, segments, style);
+        segments[queued++] = {u_line, u_line + along_v, colour, colour};
+        segments[queued++] = {v_line, v_line + along_u, colour, colour};
+        if (queued == batch_lines || i == cells) {
+            draw_lines(framebuffer, camera, std::span<const LineSegment>(segments, queued), style);
+            queued = 0;
+        }
     }
 }
 

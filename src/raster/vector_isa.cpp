@@ -15,20 +15,17 @@ bool detect_avx512() {
 }
 
 const bool supported = detect_avx512();
-std::atomic<bool> in_use{supported};
 
 }  // namespace
+
+std::atomic<bool> detail::avx512_active{supported};
 
 bool avx512_supported() {
     return supported;
 }
 
-bool avx512_in_use() {
-    return in_use.load(std::memory_order_relaxed);
-}
-
 void use_avx512(bool enabled) {
-    in_use.store(enabled && supported, std::memory_order_relaxed);
+    detail::avx512_active.store(enabled && supported, std::memory_order_relaxed);
 }
 
 }  // namespace weft::raster

@@ -108,6 +108,12 @@ void traverse_blocks(Framebuffer& framebuffer, const RasterState& state, const T
                                  state.depth_test,
                                  state.depth_write};
     const FragmentSink& sink = shader.sink();
+    if (setup.y_end - setup.y_begin <= half_block_rows) {
+        const int offset = shader.reserve();
+        shader.commit(traverse_fragment_half_block(triangle, setup.y_begin, sink, offset),
+                      setup.front_facing);
+        return;
+    }
     for (int y = setup.y_begin; y < setup.y_end; y += fragment_block_rows) {
         const int offset = shader.reserve();
         shader.commit(traverse_fragment_block(triangle, y, sink, offset), setup.front_facing);

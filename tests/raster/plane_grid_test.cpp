@@ -7,6 +7,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
+#include <span>
 
 #include "raster/camera.h"
 #include "raster/framebuffer.h"
@@ -83,6 +84,38 @@ TEST(PlaneGrid, EveryPixelOfATiltedGridLooksAtOneOfItsLines) {
             EXPECT_LE(std::min(off_line(u), off_line(v)), slack) << x << ", " << y;
         }
     EXPECT_GT(drawn, 500);
+}
+
+// The grid draws its lines in batches; a grid of more lines than a batch holds must still be
+// exactly its 2 (cells + 1) lines, each drawn on its own here from the grid's definition.
+TEST(PlaneGrid, AGridOfManyCellsIsExactlyItsLines) {
+    const Camera camera = make_camera({0.3f, 6.0f, 0.4f}, {0.0f, 0.0f, 0.0f}, 70.0f);
+    PlaneGrid grid = PlaneGrid::facing({0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f});
+    grid.cell_count = 41;  // 84 lines
+    grid.cell_size = 0.2f;
+    Framebuffer batched(400, 300), one_by_one(400, 300);
+    batched.clear(background);
+    one_by_one.clear(background);
+    draw_plane_grid(batched, camera, grid);
+    const float extent = static_cast<float>(grid.cell_count) * grid.cell_size;
+    const glm::vec3 corner = grid.centre - 0.5f * extent * (grid.axis_u + grid.axis_v);
+    for (int i = 0; i <= grid.cell_count; ++i) {
+        const float offset = static_cast<float>(i) * grid.cell_size;
+        const Rgba8 colour = 2 * i == grid.cell_count ? grid.centre_colour : grid.colour;
+        const glm::vec3 u_line = corner + offset * grid.axis_u;
+        const glm::vec3 v_line = corner + offset * grid.axis_v;
+        const LineSegment lines[2] = {{u_line, u_line + extent * grid.axis_v, colour, colour},
+                                      {v_line, v_line + extent * grid.axis_u, colour, colour}};
+        for (const LineSegment& line : lines)
+            draw_lines(one_by_one, camera, std::span<const LineSegment>(&line, 1));
+    }
+    int drawn = 0;
+    for (int y = 0; y < 300; ++y)
+        for (int x = 0; x < 400; ++x) {
+            ASSERT_EQ(batched.colour(x, y), one_by_one.colour(x, y)) << x << ", " << y;
+            drawn += !(batched.colour(x, y) == background);
+        }
+    EXPECT_GT(drawn, 84 * 100);  // every line crosses most of the view
 }
 
 }  // namespace

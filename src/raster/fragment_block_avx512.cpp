@@ -16,10 +16,10 @@ namespace weft::raster {
 namespace {
 
 // The block's vectors, in two widths: four rows of four lanes in 512-bit registers, and two
-// rows in 256-bit ones for triangles at most two rows high — nearly
-// half of a cloth's small triangles, and Zen 4 runs a 512-bit operation as two 256-bit
-// halves, so the wide block spent half its work on lanes outside the box for them. The
-// operations are the same lane by lane, hence the same values.
+// rows in 256-bit ones for triangles at most two rows high — nearly half of a cloth's small
+// triangles. Zen 4 runs a 512-bit operation as two 256-bit halves, so the wide block spent
+// half its work on lanes outside the box for them. The operations are the same lane by
+// lane, hence the same values.
 struct FourRows {
     using Floats = __m512;
     using Ints = __m512i;

@@ -75,6 +75,14 @@ constexpr int static_varying_count() {
     }
 }
 
+// How many varyings a draw with this shader interpolates: the shader's own count if it
+// declares one (a constant, so loops over them unroll), else the state's.
+template <class Shader>
+constexpr int varying_count_of(const RasterState& state) {
+    constexpr int fixed_varying_count = static_varying_count<Shader>();
+    return fixed_varying_count >= 0 ? fixed_varying_count : state.varying_count;
+}
+
 // Whether the shader colours its pixels later, in batches (see above).
 template <class Shader>
 constexpr bool is_deferred() {
@@ -135,8 +143,7 @@ void traverse_pixels(Framebuffer& framebuffer, const RasterState& state, const T
     const std::size_t width = static_cast<std::size_t>(framebuffer.width());
     Rgba8* const colours = framebuffer.colours().data();
     float* const depths = framebuffer.depths().data();
-    constexpr int fixed_varying_count = static_varying_count<Shader>();
-    const int varying_count = fixed_varying_count >= 0 ? fixed_varying_count : state.varying_count;
+    const int varying_count = varying_count_of<Shader>(state);
     const bool depth_test = state.depth_test;
     const bool depth_write = state.depth_write;
     const int x_begin = setup.x_begin, x_end = setup.x_end;
@@ -240,10 +247,8 @@ void traverse_and_shade(Framebuffer& framebuffer, const RasterState& state,
                         Shader& shader) {
     if constexpr (takes_fragment_blocks<Shader>()) {
         if (avx512_in_use() && fits_fragment_block(setup)) {
-            constexpr int fixed_varying_count = static_varying_count<Shader>();
             traverse_blocks(framebuffer, state, setup, given_over_w,
-                            fixed_varying_count >= 0 ? fixed_varying_count : state.varying_count,
-                            shader);
+                            varying_count_of<Shader>(state), shader);
             return;
         }
     }
@@ -256,8 +261,7 @@ void traverse_set_up(Framebuffer& framebuffer, const RasterState& state, const T
                      const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
                      Shader& shader) {
     const ClipVertex* const input[3] = {&a, &b, &c};
-    constexpr int fixed_varying_count = static_varying_count<Shader>();
-    const int varying_count = fixed_varying_count >= 0 ? fixed_varying_count : state.varying_count;
+    const int varying_count = varying_count_of<Shader>(state);
     std::array<std::array<float, max_varyings>, 3> over_w;
     for (int i = 0; i < 3; ++i) {
         const ClipVertex& vertex = *input[setup.vertex_order[i]];

@@ -52,6 +52,14 @@ class Simulation {
         return {workspace_.implicit_last_iterations, workspace_.implicit_last_relative_residual};
     }
 
+    // When implicit Euler's solve stops (implicit_grid_solve.h).
+    void set_implicit_solve_settings(const ImplicitSolveSettings& settings) {
+        workspace_.implicit_settings = settings;
+    }
+    const ImplicitSolveSettings& implicit_solve_settings() const {
+        return workspace_.implicit_settings;
+    }
+
     const Cloth& cloth() const { return cloth_; }
     const ForceField& force_field() const { return field_; }
     const Scene& scene() const { return scene_; }

@@ -15,6 +15,16 @@ inline constexpr Integrator all_integrators[] = {Integrator::explicit_euler,
                                                  Integrator::symplectic_euler, Integrator::verlet,
                                                  Integrator::velocity_verlet, Integrator::rk4};
 
+// While alive, implicit Euler takes its general path (double precision, any topology)
+// instead of the structured single-precision solve on grids: for the tests of the method's
+// exact discrete behaviour, which the general path is the reference for.
+struct GeneralImplicitPath {
+    GeneralImplicitPath() { set_structured_implicit_solve(false); }
+    ~GeneralImplicitPath() { set_structured_implicit_solve(true); }
+    GeneralImplicitPath(const GeneralImplicitPath&) = delete;
+    GeneralImplicitPath& operator=(const GeneralImplicitPath&) = delete;
+};
+
 // One particle of mass m hanging from a pinned one by a single spring (rows = 2, cols = 1),
 // released at the spring's rest length, so it oscillates vertically about its equilibrium.
 struct HangingSpring {

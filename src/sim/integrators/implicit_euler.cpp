@@ -56,6 +56,13 @@ void multiply_implicit_system(const Cloth& cloth, const IntegratorWorkspace& wor
 
 void step_implicit_euler(Cloth& cloth, const ForceField& field, double dt,
                          IntegratorWorkspace& work) {
+    if (step_implicit_euler_grid(cloth, field, dt, work.implicit_settings, work.implicit_grid,
+                                 work.pool)) {
+        ++work.force_evaluations;
+        work.implicit_last_iterations = work.implicit_grid.last_iterations;
+        work.implicit_last_relative_residual = work.implicit_grid.last_relative_residual;
+        return;
+    }
     const std::size_t count = cloth.particle_count();
     work.implicit_springs.resize(cloth.spring_count());  // shrinks with tearing, never grows
     if (work.implicit_delta_v.size() != count) {

@@ -12,6 +12,7 @@
 #include "sim/cloth.h"
 #include "sim/force_pass.h"
 #include "sim/grid_force_pass.h"
+#include "sim/integrators/implicit_grid_solve.h"
 #include "sim/scene.h"
 
 namespace weft {
@@ -51,6 +52,10 @@ struct IntegratorWorkspace {
     std::vector<Vec3> implicit_delta_v, implicit_rhs, implicit_residual, implicit_direction,
         implicit_product;
     std::vector<ImplicitSpringTerms> implicit_springs;
+    // The structured solve (implicit_grid_solve.h), used where the cloth is a grid, and
+    // when both solves stop.
+    ImplicitGridSolver implicit_grid;
+    ImplicitSolveSettings implicit_settings;
     int implicit_last_iterations = 0;
     double implicit_last_relative_residual = 0.0;
     bool history_valid = false;

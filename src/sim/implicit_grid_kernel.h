@@ -1,0 +1,103 @@
+// The row kernels of the structured implicit Euler solve (integrators/implicit_grid_solve.h),
+// as plain data in and plain data out, so that, like the force pass's kernel
+// (grid_force_kernel.h), they are compiled three times — baseline x86-64, AVX2, AVX-512 —
+// and chosen at run time. Nothing here knows Cloth or glm.
+//
+// Every array is single precision, structure of arrays, and padded: particle p of the
+// grid (row-major) lives at index `pad + p` of an array `pad + count + pad` long, with
+// zeros in the padding, so a row reads its neighbours two rows up or down without a
+// bounds test.
+#pragma once
+
+#include <cstddef>
+
+namespace weft::implicit_kernel {
+
+inline constexpr int max_directions = 6;
+
+// One stencil direction's share of h² K + h C, per start particle p (the spring from p to
+// p + offset): the block iso I + along u uᵀ. Zero where no live spring starts.
+struct DirectionTerms {
+    int row_step = 0;            // dr
+    int col_step = 0;            // dc
+    double stiffness = 0.0;      // N/m
+    double damping = 0.0;        // N·s/m
+    const double* rest_lengths;  // m, per start particle, unpadded; negative: no spring
+    float* iso;                  // kg/s·... (h² k max(0, 1 - L/l)), padded
+    float* along;                // h² (k - that) + h c, padded
+    float* ux;                   // u = (x_j - x_i) / |x_j - x_i|, padded
+    float* uy;
+    float* uz;
+};
+
+// Three padded components.
+struct Field3 {
+    float* x;
+    float* y;
+    float* z;
+};
+
+struct Job {
+    int rows = 0, cols = 0;
+    std::size_t pad = 0;    // padding before and after every array, in floats
+    double dt = 0.0;        // s
+    double air_drag = 0.0;  // N·s/m
+    int direction_count = 0;
+    DirectionTerms directions[max_directions] = {};
+
+    // Inputs of the setup pass (unpadded, interleaved doubles).
+    const double* positions = nullptr;       // m, x0
+    const double* velocities = nullptr;      // m/s, v0
+    const double* static_forces = nullptr;   // N, f(x0, v = 0): everything but the dampers
+    const double* masses = nullptr;          // kg
+    const double* inverse_masses = nullptr;  // 1/kg; 0 marks a pinned particle
+
+    float* mass_diagonal = nullptr;  // padded: m + h air_drag (+ the drag handle's terms)
+    float* free = nullptr;           // padded: 1 for a free particle, 0 for a pinned one
+    // The preconditioner, the inverse of each particle's 3x3 diagonal block of A, symmetric:
+    // xx yy zz xy xz yz.
+    float* inverse_diagonal[6] = {};
+
+    Field3 rhs;             // b = M v0 + h f(x0, 0)
+    Field3 start;           // v0
+    Field3 guess_change;    // the previous step's v1 - v0 (the warm start), kept between steps
+    Field3 solution;        // v1, the iterate
+    Field3 residual;        // r = b - A v1
+    Field3 preconditioned;  // z = P r
+    Field3 direction;       // d = z + β d
+    Field3 applied;         // A z
+    Field3 product;         // q = A d = A z + β q
+};
+
+// Sums one per row, in double, each row's own sum taken in a fixed lane order, so they do
+// not depend on how rows are split or on the vector width.
+struct RowSums {
+    double* first = nullptr;
+    double* second = nullptr;
+    double* third = nullptr;
+};
+
+// Pass 1, rows [begin, end): the direction terms of the springs that start on these rows,
+// b, v0, the mass diagonal and the free mask, and the guess v0 + warm_start · (previous
+// change) into `solution`.
+void setup_rows_baseline(const Job& job, int begin, int end, double warm_start);
+void setup_rows_avx2(const Job& job, int begin, int end, double warm_start);
+void setup_rows_avx512(const Job& job, int begin, int end, double warm_start);
+
+// Pass 2: the preconditioner; r = b - A v1, z = P r; sums r·z, r·r, and |b - A v0|² (the
+// scale of the residual: the right-hand side of the Δv form, h (f0 + h K v0)).
+void residual_rows_baseline(const Job& job, int begin, int end, RowSums sums);
+void residual_rows_avx2(const Job& job, int begin, int end, RowSums sums);
+void residual_rows_avx512(const Job& job, int begin, int end, RowSums sums);
+
+// Pass 3 (every iteration): d = z + β d, q = A z + β q; sums d·q.
+void direction_rows_baseline(const Job& job, int begin, int end, float beta, RowSums sums);
+void direction_rows_avx2(const Job& job, int begin, int end, float beta, RowSums sums);
+void direction_rows_avx512(const Job& job, int begin, int end, float beta, RowSums sums);
+
+// Pass 4 (every iteration): v1 += α d, r -= α q, z = P r; sums r·z, r·r.
+void update_rows_baseline(const Job& job, int begin, int end, float alpha, RowSums sums);
+void update_rows_avx2(const Job& job, int begin, int end, float alpha, RowSums sums);
+void update_rows_avx512(const Job& job, int begin, int end, float alpha, RowSums sums);
+
+}  // namespace weft::implicit_kernel

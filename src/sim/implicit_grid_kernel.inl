@@ -1,0 +1,314 @@
+// The body of the structured implicit solve's row kernels, included by
+// implicit_grid_kernel_*.cpp inside an anonymous namespace (internal linkage, see
+// grid_force_kernel.h for why the builds must not share inline functions).
+//
+// The system is A v1 = b with A = M + h C + h² K (Baraff & Witkin 1998), b = M v0 + h f(x0, 0):
+// the Δv form of implicit_euler.cpp rewritten for v1 = v0 + Δv. Subtracting A v0 from both
+// sides gives back A Δv = h (f0 + h K v0), because the dampers are linear in v (C v0 is the
+// damping part of f0), so the two forms are the same system; this one needs no product with
+// K for its right-hand side.
+//
+// Gather formulation, as in the force pass: for every direction k (offset o_k) and particle
+// p, the spring from p to p + o_k contributes B_k[p] (v_p - v_{p+o_k}) to (A v)_p and the
+// spring from p - o_k to p contributes B_k[p - o_k] (v_p - v_{p-o_k}), with the block
+// B = iso I + along u uᵀ stored per start particle (zero where no live spring starts). Every
+// particle's sum is taken in the same order whatever the rows a thread owns, so the product
+// is the same bit for bit for any split; sums over particles are taken per row in sixteen
+// fixed lanes and then row by row, so they are too, and for every vector width.
+
+constexpr int sum_lanes = 16;
+
+inline std::size_t at(const Job& job, int row) {
+    return job.pad + static_cast<std::size_t>(row) * static_cast<std::size_t>(job.cols);
+}
+
+// Σ a·b over one row's columns (three components), lanes fixed by column index mod 16.
+double row_dot(const Field3& a, const Field3& b, std::size_t begin, int cols) {
+    float lanes[sum_lanes] = {};
+    const float* __restrict ax = a.x + begin;
+    const float* __restrict ay = a.y + begin;
+    const float* __restrict az = a.z + begin;
+    const float* __restrict bx = b.x + begin;
+    const float* __restrict by = b.y + begin;
+    const float* __restrict bz = b.z + begin;
+    int c = 0;
+    for (; c + sum_lanes <= cols; c += sum_lanes)
+        for (int k = 0; k < sum_lanes; ++k)
+            lanes[k] += ax[c + k] * bx[c + k] + ay[c + k] * by[c + k] + az[c + k] * bz[c + k];
+    for (int k = 0; c + k < cols; ++k)
+        lanes[k] += ax[c + k] * bx[c + k] + ay[c + k] * by[c + k] + az[c + k] * bz[c + k];
+    double sum = 0.0;
+    for (int k = 0; k < sum_lanes; ++k) sum += static_cast<double>(lanes[k]);
+    return sum;
+}
+
+// One direction's two springs at every particle of a row, added into y: the spring that
+// starts at p, B[p] (v_p - v_{p+o}), and the one that ends there, B[p - o] (v_p - v_{p-o}).
+// Every stream is its own restrict pointer, so the loop vectorises.
+void add_direction_row(const float* __restrict iso_f, const float* __restrict along_f,
+                       const float* __restrict ux_f, const float* __restrict uy_f,
+                       const float* __restrict uz_f, const float* __restrict iso_b,
+                       const float* __restrict along_b, const float* __restrict ux_b,
+                       const float* __restrict uy_b, const float* __restrict uz_b,
+                       const float* __restrict x, const float* __restrict y,
+                       const float* __restrict z, std::ptrdiff_t o, float* __restrict yx,
+                       float* __restrict yy, float* __restrict yz, int cols) {
+    for (int c = 0; c < cols; ++c) {
+        const float vx = x[c], vy = y[c], vz = z[c];
+        const float fx = vx - x[c + o], fy = vy - y[c + o], fz = vz - z[c + o];
+        const float f_along = along_f[c] * (ux_f[c] * fx + uy_f[c] * fy + uz_f[c] * fz);
+        const float gx = vx - x[c - o], gy = vy - y[c - o], gz = vz - z[c - o];
+        const float g_along = along_b[c] * (ux_b[c] * gx + uy_b[c] * gy + uz_b[c] * gz);
+        yx[c] += (iso_f[c] * fx + f_along * ux_f[c]) + (iso_b[c] * gx + g_along * ux_b[c]);
+        yy[c] += (iso_f[c] * fy + f_along * uy_f[c]) + (iso_b[c] * gy + g_along * uy_b[c]);
+        yz[c] += (iso_f[c] * fz + f_along * uz_f[c]) + (iso_b[c] * gz + g_along * uz_b[c]);
+    }
+}
+
+// y = m v over n particles.
+void scale_row(const float* __restrict mass, const float* __restrict x, const float* __restrict y,
+               const float* __restrict z, float* __restrict yx, float* __restrict yy,
+               float* __restrict yz, int n) {
+    for (int c = 0; c < n; ++c) {
+        yx[c] = mass[c] * x[c];
+        yy[c] = mass[c] * y[c];
+        yz[c] = mass[c] * z[c];
+    }
+}
+
+// y *= mask over n particles.
+void mask_row(const float* __restrict mask, float* __restrict yx, float* __restrict yy,
+              float* __restrict yz, int n) {
+    for (int c = 0; c < n; ++c) {
+        yx[c] *= mask[c];
+        yy[c] *= mask[c];
+        yz[c] *= mask[c];
+    }
+}
+
+// y = A v over one row, masked to zero on pinned particles.
+void product_row(const Job& job, int row, const Field3& v, const Field3& y) {
+    const std::size_t base = at(job, row);
+    const int cols = job.cols;
+    scale_row(job.mass_diagonal + base, v.x + base, v.y + base, v.z + base, y.x + base, y.y + base,
+              y.z + base, cols);
+    for (int k = 0; k < job.direction_count; ++k) {
+        const DirectionTerms& d = job.directions[k];
+        const std::ptrdiff_t o = static_cast<std::ptrdiff_t>(d.row_step) * cols + d.col_step;
+        add_direction_row(d.iso + base, d.along + base, d.ux + base, d.uy + base, d.uz + base,
+                          d.iso + base - o, d.along + base - o, d.ux + base - o, d.uy + base - o,
+                          d.uz + base - o, v.x + base, v.y + base, v.z + base, o, y.x + base,
+                          y.y + base, y.z + base, cols);
+    }
+    mask_row(job.free + base, y.x + base, y.y + base, y.z + base, cols);
+}
+
+// z = P r over n particles: a symmetric 3x3 block (xx yy zz xy xz yz) times r per particle.
+void multiply_blocks(const float* __restrict xx, const float* __restrict yy,
+                     const float* __restrict zz, const float* __restrict xy,
+                     const float* __restrict xz, const float* __restrict yz,
+                     const float* __restrict rx, const float* __restrict ry,
+                     const float* __restrict rz, float* __restrict zx, float* __restrict zy,
+                     float* __restrict z_z, int n) {
+    for (int c = 0; c < n; ++c) {
+        zx[c] = xx[c] * rx[c] + xy[c] * ry[c] + xz[c] * rz[c];
+        zy[c] = xy[c] * rx[c] + yy[c] * ry[c] + yz[c] * rz[c];
+        z_z[c] = xz[c] * rx[c] + yz[c] * ry[c] + zz[c] * rz[c];
+    }
+}
+
+// z = P r over one row.
+void precondition_row(const Job& job, int row) {
+    const std::size_t base = at(job, row);
+    const auto& inverse = job.inverse_diagonal;
+    multiply_blocks(inverse[0] + base, inverse[1] + base, inverse[2] + base, inverse[3] + base,
+                    inverse[4] + base, inverse[5] + base, job.residual.x + base,
+                    job.residual.y + base, job.residual.z + base, job.preconditioned.x + base,
+                    job.preconditioned.y + base, job.preconditioned.z + base, job.cols);
+}
+
+void setup_rows(const Job& job, int begin, int end, double warm_start) {
+    const double h = job.dt;
+    const int cols = job.cols;
+    // The springs that start on these rows: their blocks of h² K + h C.
+    for (int row = begin; row < end; ++row) {
+        const std::size_t base = at(job, row);
+        const std::size_t first = static_cast<std::size_t>(row) * static_cast<std::size_t>(cols);
+        for (int k = 0; k < job.direction_count; ++k) {
+            const DirectionTerms& d = job.directions[k];
+            const bool inside = row + d.row_step < job.rows;
+            const std::ptrdiff_t o = static_cast<std::ptrdiff_t>(d.row_step) * cols + d.col_step;
+            const double* __restrict rest = d.rest_lengths + first;
+            const double* __restrict x = job.positions;
+            for (int c = 0; c < cols; ++c) {
+                const std::size_t p = first + static_cast<std::size_t>(c);
+                const double rest_length = inside ? rest[c] : -1.0;
+                // The other end only where a spring is: elsewhere p itself (never out of range).
+                const std::size_t q =
+                    rest_length >= 0.0
+                        ? static_cast<std::size_t>(static_cast<std::ptrdiff_t>(p) + o)
+                        : p;
+                const double ex = x[3 * q] - x[3 * p];
+                const double ey = x[3 * q + 1] - x[3 * p + 1];
+                const double ez = x[3 * q + 2] - x[3 * p + 2];
+                const double length = std::sqrt(ex * ex + ey * ey + ez * ez);
+                const bool live = rest_length >= 0.0 && length > 0.0;
+                const double inverse_length = live ? 1.0 / length : 0.0;
+                // The transverse stiffness k (1 - L/l), clamped at 0 for a compressed spring
+                // (negative, it would make A indefinite; see implicit_euler.cpp).
+                const double transverse =
+                    d.stiffness * std::max(0.0, 1.0 - rest_length * inverse_length);
+                const std::size_t i = base + static_cast<std::size_t>(c);
+                d.iso[i] = live ? static_cast<float>(h * h * transverse) : 0.0f;
+                d.along[i] =
+                    live ? static_cast<float>(h * h * (d.stiffness - transverse) + h * d.damping)
+                         : 0.0f;
+                d.ux[i] = static_cast<float>(ex * inverse_length);
+                d.uy[i] = static_cast<float>(ey * inverse_length);
+                d.uz[i] = static_cast<float>(ez * inverse_length);
+            }
+        }
+        // b, v0, the guess, the mass diagonal and the free mask.
+        for (int c = 0; c < cols; ++c) {
+            const std::size_t p = first + static_cast<std::size_t>(c);
+            const std::size_t i = base + static_cast<std::size_t>(c);
+            const bool is_free = job.inverse_masses[p] != 0.0;
+            const double m = job.masses[p];
+            job.free[i] = is_free ? 1.0f : 0.0f;
+            job.mass_diagonal[i] = static_cast<float>(m + h * job.air_drag);
+            const double* v = job.velocities + 3 * p;
+            const double* f = job.static_forces + 3 * p;
+            float* b[3] = {job.rhs.x, job.rhs.y, job.rhs.z};
+            float* v0[3] = {job.start.x, job.start.y, job.start.z};
+            float* guess[3] = {job.solution.x, job.solution.y, job.solution.z};
+            const float* change[3] = {job.guess_change.x, job.guess_change.y, job.guess_change.z};
+            for (int axis = 0; axis < 3; ++axis) {
+                b[axis][i] = is_free ? static_cast<float>(m * v[axis] + h * f[axis]) : 0.0f;
+                v0[axis][i] = is_free ? static_cast<float>(v[axis]) : 0.0f;
+                guess[axis][i] =
+                    is_free ? static_cast<float>(v[axis] + warm_start * change[axis][i]) : 0.0f;
+            }
+        }
+    }
+}
+
+// The inverse of a symmetric 3x3 block by cofactors, in double (the block is dominated by
+// rank-one spring terms, so it can be far from the identity).
+void invert_symmetric(double xx, double yy, double zz, double xy, double xz, double yz,
+                      double out[6]) {
+    const double c_xx = yy * zz - yz * yz;
+    const double c_xy = xz * yz - xy * zz;
+    const double c_xz = xy * yz - xz * yy;
+    const double determinant = xx * c_xx + xy * c_xy + xz * c_xz;
+    const double inverse = determinant > 0.0 ? 1.0 / determinant : 0.0;
+    out[0] = c_xx * inverse;
+    out[1] = (xx * zz - xz * xz) * inverse;
+    out[2] = (xx * yy - xy * xy) * inverse;
+    out[3] = c_xy * inverse;
+    out[4] = c_xz * inverse;
+    out[5] = (xy * xz - xx * yz) * inverse;
+}
+
+void diagonal_row(const Job& job, int row) {
+    const std::size_t base = at(job, row);
+    for (int c = 0; c < job.cols; ++c) {
+        const std::size_t i = base + static_cast<std::size_t>(c);
+        double xx = job.mass_diagonal[i], yy = xx, zz = xx, xy = 0.0, xz = 0.0, yz = 0.0;
+        for (int k = 0; k < job.direction_count; ++k) {
+            const DirectionTerms& d = job.directions[k];
+            const std::ptrdiff_t o =
+                static_cast<std::ptrdiff_t>(d.row_step) * job.cols + d.col_step;
+            for (const std::size_t j :
+                 {i, static_cast<std::size_t>(static_cast<std::ptrdiff_t>(i) - o)}) {
+                const double iso = d.iso[j], along = d.along[j];
+                const double ux = d.ux[j], uy = d.uy[j], uz = d.uz[j];
+                xx += iso + along * ux * ux;
+                yy += iso + along * uy * uy;
+                zz += iso + along * uz * uz;
+                xy += along * ux * uy;
+                xz += along * ux * uz;
+                yz += along * uy * uz;
+            }
+        }
+        double inverse[6];
+        invert_symmetric(xx, yy, zz, xy, xz, yz, inverse);
+        for (int e = 0; e < 6; ++e)
+            job.inverse_diagonal[e][i] = static_cast<float>(inverse[e]) * job.free[i];
+    }
+}
+
+// r = b - y over a row (y already in r).
+void subtract_from_rhs_row(const Job& job, int row) {
+    const std::size_t base = at(job, row);
+    for (int c = 0; c < job.cols; ++c) {
+        const std::size_t i = base + static_cast<std::size_t>(c);
+        job.residual.x[i] = job.rhs.x[i] - job.residual.x[i];
+        job.residual.y[i] = job.rhs.y[i] - job.residual.y[i];
+        job.residual.z[i] = job.rhs.z[i] - job.residual.z[i];
+    }
+}
+
+void residual_rows(const Job& job, int begin, int end, RowSums sums) {
+    for (int row = begin; row < end; ++row) {
+        diagonal_row(job, row);
+        const std::size_t base = at(job, row);
+        // |b - A v0|² first (the residual's scale), then r at the guess, over it.
+        product_row(job, row, job.start, job.residual);
+        subtract_from_rhs_row(job, row);
+        sums.third[row] = row_dot(job.residual, job.residual, base, job.cols);
+        product_row(job, row, job.solution, job.residual);
+        subtract_from_rhs_row(job, row);
+        precondition_row(job, row);
+        sums.first[row] = row_dot(job.residual, job.preconditioned, base, job.cols);
+        sums.second[row] = row_dot(job.residual, job.residual, base, job.cols);
+    }
+}
+
+// out = a + s b over n floats.
+void add_scaled(float* __restrict out, const float* __restrict a, float s,
+                const float* __restrict b, int n) {
+    for (int c = 0; c < n; ++c) out[c] = a[c] + s * b[c];
+}
+
+// out += s b over n floats.
+void add_scaled_in_place(float* __restrict out, float s, const float* __restrict b, int n) {
+    for (int c = 0; c < n; ++c) out[c] += s * b[c];
+}
+
+// out = a + s out over n floats.
+void scale_and_add(float* __restrict out, const float* __restrict a, float s, int n) {
+    for (int c = 0; c < n; ++c) out[c] = a[c] + s * out[c];
+}
+
+// The next search direction and its product without a second pass over the rows:
+// d = z + β d and, since A is linear, q = A d = A z + β q. Only z of the neighbouring rows
+// is read, and it is complete (the update pass wrote it before this pass began).
+void direction_rows(const Job& job, int begin, int end, float beta, RowSums sums) {
+    for (int row = begin; row < end; ++row) {
+        const std::size_t base = at(job, row);
+        const int cols = job.cols;
+        product_row(job, row, job.preconditioned, job.applied);
+        scale_and_add(job.direction.x + base, job.preconditioned.x + base, beta, cols);
+        scale_and_add(job.direction.y + base, job.preconditioned.y + base, beta, cols);
+        scale_and_add(job.direction.z + base, job.preconditioned.z + base, beta, cols);
+        scale_and_add(job.product.x + base, job.applied.x + base, beta, cols);
+        scale_and_add(job.product.y + base, job.applied.y + base, beta, cols);
+        scale_and_add(job.product.z + base, job.applied.z + base, beta, cols);
+        sums.first[row] = row_dot(job.direction, job.product, base, cols);
+    }
+}
+
+void update_rows(const Job& job, int begin, int end, float alpha, RowSums sums) {
+    for (int row = begin; row < end; ++row) {
+        const std::size_t base = at(job, row);
+        add_scaled_in_place(job.solution.x + base, alpha, job.direction.x + base, job.cols);
+        add_scaled_in_place(job.solution.y + base, alpha, job.direction.y + base, job.cols);
+        add_scaled_in_place(job.solution.z + base, alpha, job.direction.z + base, job.cols);
+        add_scaled_in_place(job.residual.x + base, -alpha, job.product.x + base, job.cols);
+        add_scaled_in_place(job.residual.y + base, -alpha, job.product.y + base, job.cols);
+        add_scaled_in_place(job.residual.z + base, -alpha, job.product.z + base, job.cols);
+        precondition_row(job, row);
+        sums.first[row] = row_dot(job.residual, job.preconditioned, base, job.cols);
+        sums.second[row] = row_dot(job.residual, job.residual, base, job.cols);
+    }
+}

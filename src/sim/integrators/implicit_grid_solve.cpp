@@ -1,0 +1,284 @@
+#include "sim/integrators/implicit_grid_solve.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "sim/drag.h"
+#include "sim/force_pass.h"
+#include "sim/grid_force_pass.h"
+
+namespace weft {
+namespace {
+
+std::atomic<bool> structured_solve_enabled{true};
+
+// Rows are split between threads only when there are enough particles to pay for the
+// hand-offs (four per iteration).
+constexpr std::size_t min_particles_for_threads = 4096;
+
+template <class Function>
+Function* kernel_of(Function* baseline, Function* avx2, Function* avx512) {
+    const SimdLevel level = simd_level();
+    return level == SimdLevel::avx512 ? avx512 : level == SimdLevel::avx2 ? avx2 : baseline;
+}
+
+// Runs pass(begin, end) over the rows, split between the pool's threads when worth it.
+template <class Pass>
+void over_rows(const ImplicitGridSolver& solver, WorkerPool* pool, Pass&& pass) {
+    const auto count =
+        static_cast<std::size_t>(solver.rows) * static_cast<std::size_t>(solver.cols);
+    if (pool && pool->thread_count() > 1 && count >= min_particles_for_threads)
+        pool->parallel_for(static_cast<std::size_t>(solver.rows),
+                           [&](std::size_t begin, std::size_t end) {
+                               pass(static_cast<int>(begin), static_cast<int>(end));
+                           });
+    else
+        pass(0, solver.rows);
+}
+
+// Σ over rows, in row order: the same sum whatever rows each thread had.
+double sum_rows(const double* per_row, int rows) {
+    double sum = 0.0;
+    for (int row = 0; row < rows; ++row) sum += per_row[row];
+    return sum;
+}
+
+}  // namespace
+
+void set_structured_implicit_solve(bool enabled) {
+    structured_solve_enabled.store(enabled, std::memory_order_relaxed);
+}
+
+bool structured_implicit_solve() {
+    return structured_solve_enabled.load(std::memory_order_relaxed);
+}
+
+void ImplicitGridSolver::prepare(int grid_rows, int grid_cols) {
+    if (grid_rows == rows && grid_cols == cols && !storage.empty()) return;
+    rows = grid_rows;
+    cols = grid_cols;
+    const std::size_t count = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
+    // Two rows and two columns either way, rounded to whole vectors of sixteen floats.
+    pad = (2 * static_cast<std::size_t>(cols) + 2 + 15) / 16 * 16;
+    stride = (count + 2 * pad + 15) / 16 * 16;
+    constexpr int arrays = 5 * implicit_kernel::max_directions + 2 + 6 + 9 * 3;
+    storage.assign(stride * arrays, 0.0f);
+    row_sums.assign(3 * static_cast<std::size_t>(rows), 0.0);
+    static_forces.assign(count, Vec3(0.0));
+    zero_velocities.assign(count, Vec3(0.0));
+    has_previous_change = false;
+    job = implicit_kernel::Job{};
+    bind();
+}
+
+ImplicitGridSolver::ImplicitGridSolver(const ImplicitGridSolver& other)
+    : rows(other.rows),
+      cols(other.cols),
+      pad(other.pad),
+      stride(other.stride),
+      storage(other.storage),
+      row_sums(other.row_sums),
+      static_forces(other.static_forces),
+      zero_velocities(other.zero_velocities),
+      job(other.job),
+      has_previous_change(other.has_previous_change),
+      last_iterations(other.last_iterations),
+      last_relative_residual(other.last_relative_residual) {
+    if (!storage.empty()) bind();
+}
+
+ImplicitGridSolver& ImplicitGridSolver::operator=(const ImplicitGridSolver& other) {
+    if (this == &other) return *this;
+    rows = other.rows;
+    cols = other.cols;
+    pad = other.pad;
+    stride = other.stride;
+    storage = other.storage;
+    row_sums = other.row_sums;
+    static_forces = other.static_forces;
+    zero_velocities = other.zero_velocities;
+    job = other.job;
+    has_previous_change = other.has_previous_change;
+    last_iterations = other.last_iterations;
+    last_relative_residual = other.last_relative_residual;
+    if (!storage.empty()) bind();
+    return *this;
+}
+
+void ImplicitGridSolver::bind() {
+    float* next = storage.data();
+    auto take = [&] {
+        float* array = next;
+        next += stride;
+        return array;
+    };
+    auto take3 = [&] { return implicit_kernel::Field3{take(), take(), take()}; };
+    job.rows = rows;
+    job.cols = cols;
+    job.pad = pad;
+    for (implicit_kernel::DirectionTerms& d : job.directions) {
+        d.iso = take();
+        d.along = take();
+        d.ux = take();
+        d.uy = take();
+        d.uz = take();
+    }
+    job.mass_diagonal = take();
+    job.free = take();
+    for (float*& e : job.inverse_diagonal) e = take();
+    job.rhs = take3();
+    job.start = take3();
+    job.guess_change = take3();
+    job.solution = take3();
+    job.residual = take3();
+    job.preconditioned = take3();
+    job.direction = take3();
+    job.applied = take3();
+    job.product = take3();
+}
+
+bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
+                              const ImplicitSolveSettings& settings, ImplicitGridSolver& solver,
+                              WorkerPool* pool) {
+    if (!structured_implicit_solve() || !field.colliders.empty() || !grid_stencil_usable(cloth))
+        return false;
+    if (cloth.grid_stencil.directions.size() > implicit_kernel::max_directions) return false;
+    solver.prepare(cloth.rows, cloth.cols);
+    implicit_kernel::Job& job = solver.job;
+    const std::size_t count = cloth.particle_count();
+
+    // f(x0, v = 0): gravity, the wind's push and the elastic springs; the dampers are
+    // linear in v and live in the matrix (see implicit_grid_kernel.inl).
+    ForceField static_field = field;
+    static_field.drag = nullptr;
+    if (!accumulate_grid_forces(cloth, static_field, cloth.positions, solver.zero_velocities,
+                                solver.static_forces, pool))
+        return false;
+    job.dt = dt;
+    job.air_drag = field.air_drag;
+    job.direction_count = 0;
+    for (const GridStencilDirection& direction : cloth.grid_stencil.directions) {
+        const SpringGroup& group = cloth.spring_groups[direction.group];
+        implicit_kernel::DirectionTerms& d = job.directions[job.direction_count++];
+        d.row_step = direction.row_step;
+        d.col_step = direction.col_step;
+        d.stiffness = group.stiffness;
+        d.damping = group.damping;
+        d.rest_lengths = direction.rest_lengths.data();
+    }
+    // Directions the cloth no longer has must not leave old terms behind.
+    for (int k = job.direction_count; k < implicit_kernel::max_directions; ++k) {
+        implicit_kernel::DirectionTerms& d = job.directions[k];
+        for (float* array : {d.iso, d.along}) std::fill(array, array + solver.stride, 0.0f);
+    }
+    job.positions = &cloth.positions.data()->x;
+    job.velocities = &cloth.velocities.data()->x;
+    job.static_forces = &solver.static_forces.data()->x;
+    job.masses = cloth.masses.data();
+    job.inverse_masses = cloth.inverse_masses.data();
+
+    // The drag handle, f = w m (ω² (goal - x) - ω v), with the goal brought within
+    // max_speed × h of the particle (drag.h): its spring to the goal goes into b, its
+    // stiffness and damping into the diagonal (below), so the hand is as implicit as the
+    // cloth and its pull per step is bounded.
+    const DragHandle* drag = field.drag && field.drag->active() ? field.drag : nullptr;
+    auto hand_reach = [&](std::size_t k) {
+        const std::uint32_t p = drag->particles[k];
+        const Vec3 reach = drag->target + drag->offsets[k] - cloth.positions[p];
+        const double distance = glm::length(reach);
+        const double longest = drag->max_speed * dt;
+        return distance > longest ? (longest / distance) * reach : reach;
+    };
+    if (drag) {
+        const double omega = drag->angular_frequency;
+        for (std::size_t k = 0; k < drag->particles.size(); ++k) {
+            const std::uint32_t p = drag->particles[k];
+            solver.static_forces[p] +=
+                (drag->weights[k] * cloth.masses[p] * omega * omega) * hand_reach(k);
+        }
+    }
+
+    const double warm_start = settings.warm_start && solver.has_previous_change ? 1.0 : 0.0;
+    const auto setup =
+        kernel_of(implicit_kernel::setup_rows_baseline, implicit_kernel::setup_rows_avx2,
+                  implicit_kernel::setup_rows_avx512);
+    over_rows(solver, pool, [&](int begin, int end) { setup(job, begin, end, warm_start); });
+    if (drag) {
+        const double omega = drag->angular_frequency;
+        for (std::size_t k = 0; k < drag->particles.size(); ++k) {
+            const std::uint32_t p = drag->particles[k];
+            const double share = drag->weights[k] * cloth.masses[p];
+            job.mass_diagonal[solver.pad + p] +=
+                static_cast<float>(dt * share * omega + dt * dt * share * omega * omega);
+        }
+    }
+
+    const int rows = solver.rows;
+    double* sums = solver.row_sums.data();
+    const implicit_kernel::RowSums row_sums{sums, sums + rows, sums + 2 * rows};
+    const auto residual =
+        kernel_of(implicit_kernel::residual_rows_baseline, implicit_kernel::residual_rows_avx2,
+                  implicit_kernel::residual_rows_avx512);
+    over_rows(solver, pool, [&](int begin, int end) { residual(job, begin, end, row_sums); });
+    double r_z = sum_rows(row_sums.first, rows);
+    double r_r = sum_rows(row_sums.second, rows);
+    const double scale = std::sqrt(sum_rows(row_sums.third, rows));
+    const double target = settings.tolerance(dt) * scale;
+
+    // Preconditioned conjugate gradient (block Jacobi), in single precision; the scalars
+    // and every sum in double.
+    for (float* array : {job.direction.x, job.direction.y, job.direction.z, job.product.x,
+                         job.product.y, job.product.z})
+        std::fill(array, array + solver.stride, 0.0f);
+    const auto direction =
+        kernel_of(implicit_kernel::direction_rows_baseline, implicit_kernel::direction_rows_avx2,
+                  implicit_kernel::direction_rows_avx512);
+    const auto update =
+        kernel_of(implicit_kernel::update_rows_baseline, implicit_kernel::update_rows_avx2,
+                  implicit_kernel::update_rows_avx512);
+    double beta = 0.0;
+    int iteration = 0;
+    while (std::sqrt(r_r) > target && iteration < settings.max_iterations) {
+        const auto beta_f = static_cast<float>(beta);
+        over_rows(solver, pool,
+                  [&](int begin, int end) { direction(job, begin, end, beta_f, row_sums); });
+        const double curvature = sum_rows(row_sums.first, rows);
+        if (!(curvature > 0.0)) break;  // not positive definite (or NaN): the guard will see
+        const auto alpha_f = static_cast<float>(r_z / curvature);
+        over_rows(solver, pool,
+                  [&](int begin, int end) { update(job, begin, end, alpha_f, row_sums); });
+        const double next_r_z = sum_rows(row_sums.first, rows);
+        r_r = sum_rows(row_sums.second, rows);
+        beta = r_z > 0.0 ? next_r_z / r_z : 0.0;
+        r_z = next_r_z;
+        ++iteration;
+    }
+    solver.last_iterations = iteration;
+    solver.last_relative_residual = scale > 0.0 ? std::sqrt(r_r) / scale : 0.0;
+
+    // v1 = the solution, x1 = x0 + h v1; pinned particles stay where they are.
+    over_rows(solver, pool, [&](int begin, int end) {
+        for (int row = begin; row < end; ++row) {
+            for (int c = 0; c < solver.cols; ++c) {
+                const std::size_t p = static_cast<std::size_t>(row) * solver.cols + c;
+                const std::size_t i = solver.pad + p;
+                const bool is_free = job.free[i] != 0.0f;
+                const Vec3 v1 = is_free
+                                    ? Vec3(job.solution.x[i], job.solution.y[i], job.solution.z[i])
+                                    : Vec3(0.0);
+                cloth.velocities[p] = v1;
+                cloth.positions[p] += dt * v1;
+                job.guess_change.x[i] = job.solution.x[i] - job.start.x[i];
+                job.guess_change.y[i] = job.solution.y[i] - job.start.y[i];
+                job.guess_change.z[i] = job.solution.z[i] - job.start.z[i];
+            }
+        }
+    });
+    solver.has_previous_change = true;
+    (void)count;
+    return true;
+}
+
+}  // namespace weft

@@ -2,6 +2,7 @@
 // parameter changes · scenes (reset, load, save) · recording and replay.
 #include "app/demo_state.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -74,7 +75,8 @@ void DemoState::say(const std::string& text) {
 
 // ---- stepping with recovery -----------------------------------------------------------------
 
-bool Recovery::step(Simulation& simulation, double restart_dt, std::string& message) {
+bool Recovery::step(Simulation& simulation, double chosen_dt, std::string& message) {
+    const double step_dt = simulation.dt();
     const StepReport report = simulation.step();
     if (!report.diverged()) {
         // Keep a sound state from about a quarter second back.
@@ -82,23 +84,48 @@ bool Recovery::step(Simulation& simulation, double restart_dt, std::string& mess
             last_good = simulation;
             last_good_time = simulation.time();
         }
+        sound_seconds += step_dt;
+        if (sound_seconds < growth_wait) return true;
+        if (trying_grown_dt) {  // the grown dt held as long as it took to earn it
+            trying_grown_dt = false;
+            growth_wait = sound_seconds_before_growth;
+        }
+        if (step_dt >= chosen_dt) return true;
+        // Heal: what diverged is often a moment (a fling, a swing through a bad pose) that the
+        // chosen dt holds again once it has passed; if not, growth_wait spaces the retries.
+        // Doubling undoes one halving exactly (powers of two are exact in floating point), so
+        // the run lands on the chosen dt bit for bit.
+        const double grown_dt = std::min(2.0 * step_dt, chosen_dt);
+        simulation.set_dt(grown_dt);
+        trying_grown_dt = true;
+        char text[256];
+        std::snprintf(text, sizeof text, "sound for %.2g s at t=%.3f s: dt %s %.3g ms",
+                      sound_seconds, simulation.time(),
+                      grown_dt == chosen_dt ? "restored to" : "grown to", grown_dt * 1e3);
+        sound_seconds = 0.0;
+        message = text;
         return true;
     }
     // Roll back the motion, not the user's choices: the parameters stay as they are now, only
     // dt is halved. A drag in progress is let go (it may be what blew up).
     const Scene wanted = simulation.scene();
     const double diverged_at = simulation.time();
-    const double halved_dt = 0.5 * simulation.dt();
+    const double halved_dt = 0.5 * step_dt;
+    // A grown dt that diverged before it held as long as it took to earn it: the chosen dt
+    // may be past what these parameters hold, so the next try waits twice as long.
+    if (trying_grown_dt) growth_wait *= 2.0;
+    trying_grown_dt = false;
+    sound_seconds = 0.0;
     char text[512];
     if (halved_dt < smallest_recovery_dt) {
         simulation.reset();
-        simulation.set_dt(restart_dt);
+        simulation.set_dt(chosen_dt);
         forget();
         std::snprintf(text, sizeof text,
                       "diverged at t=%.3f s: %s — no step above %.0e s holds these parameters; "
                       "restarted the scene at dt %.3g ms",
                       diverged_at, report.divergence->c_str(), smallest_recovery_dt,
-                      restart_dt * 1e3);
+                      chosen_dt * 1e3);
     } else {
         if (last_good) {
             simulation = *last_good;
@@ -139,13 +166,16 @@ int DemoState::step(int steps) {
             // catches up over the following steps instead of stalling this one.
             int budget =
                 static_cast<int>(std::ceil(simulation.dt() / companion.simulation.dt())) + 1;
-            while (budget-- > 0 &&
-                   companion.simulation.time() + 0.5 * companion.simulation.dt() <=
-                       simulation.time()) {
-                if (!companion.recovery.step(companion.simulation, companion.restart_dt,
-                                             companion_why)) {
-                    companion.cloth_view = view::ClothView(companion.simulation.cloth());
+            while (budget-- > 0 && companion.simulation.time() + 0.5 * companion.simulation.dt() <=
+                                       simulation.time()) {
+                const bool companion_sound = companion.recovery.step(
+                    companion.simulation, companion.restart_dt, companion_why);
+                if (!companion_why.empty()) {
                     say("copy " + std::to_string(c + 1) + ": " + companion_why);
+                    companion_why.clear();
+                }
+                if (!companion_sound) {
+                    companion.cloth_view = view::ClothView(companion.simulation.cloth());
                     break;
                 }
             }
@@ -153,6 +183,8 @@ int DemoState::step(int steps) {
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         }
         apply_due_events();
+        // The main run speaks last, so its message is the one on screen.
+        if (sound && !why.empty()) say(why);  // dt grew back
         if (!sound) {
             hand.dragging = false;
             cloth_view = view::ClothView(simulation.cloth());
@@ -192,8 +224,12 @@ std::optional<std::string> DemoState::change_companion(std::size_t index,
     same_but_solver.solver = companion.scene().solver;
     if (!(same_but_solver == companion.scene()))
         return "a copy differs from the main run only in its integrator and dt";
+    // The copy's solver as the panel shows it, with the edits: dt differs from the running
+    // one only where the user set it, and only then is it the copy's new chosen dt (not
+    // whatever recovery had halved it to).
+    if (checked.scene->solver.dt != companion.dt())
+        companions[index].restart_dt = checked.scene->solver.dt;
     companion.set_parameters(*checked.scene);
-    companions[index].restart_dt = checked.scene->solver.dt;
     return std::nullopt;
 }
 
@@ -206,12 +242,32 @@ void DemoState::perform(const ClothEvent& event) {
 }
 
 void DemoState::apply_to_all_runs(const ClothEvent& event) {
+    using Kind = ClothEvent::Kind;
+    const double dt_before = simulation.dt();
     bool rebuilt = apply_event(simulation, event) == EventResult::rebuilt;
     for (Companion& companion : companions) {
         const SolverSpec own = companion.simulation.scene().solver;
         rebuilt |= apply_event(companion.simulation, event, &own) == EventResult::rebuilt;
     }
-    using Kind = ClothEvent::Kind;
+    // The panel writes the running parameters with its edits, so dt differs from the running
+    // one only where the user set it: that is the new chosen dt. Here, not in change(), so a
+    // replay of the event chooses the same dt.
+    if (event.kind == Kind::parameters && simulation.dt() != dt_before) {
+        restart_dt = simulation.dt();
+        recovery.restart_growth();
+    }
+    if (event.kind == Kind::reset) {
+        // R starts over at the chosen dt: whatever recovery halved it to was for the motion
+        // that diverged, which is gone.
+        // set_dt only where dt differs: it drops the history a multistep method carries.
+        if (simulation.dt() != restart_dt) simulation.set_dt(restart_dt);
+        recovery.recoveries = 0;
+        for (Companion& companion : companions) {
+            if (companion.simulation.dt() != companion.restart_dt)
+                companion.simulation.set_dt(companion.restart_dt);
+            companion.recovery.recoveries = 0;
+        }
+    }
     if (rebuilt || event.kind == Kind::reset) {
         after_new_state();
     } else if (event.kind == Kind::cut || event.kind == Kind::pin || event.kind == Kind::unpin ||
@@ -361,8 +417,7 @@ bool DemoState::load_scene(const std::string& path, std::string& error) {
 
 void DemoState::start_recording() {
     replaying.reset();
-    apply_to_all_runs(plain_event(ClothEvent::Kind::reset));
-    restart_dt = simulation.dt();
+    apply_to_all_runs(plain_event(ClothEvent::Kind::reset));  // at the chosen dt
     steps_run = 0;
     recording = SessionRecord{};
     recording->scene_toml = scene_to_toml(simulation.scene());

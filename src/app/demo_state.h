@@ -50,21 +50,44 @@ struct ViewSize {
 // would stall the demo without making a hopeless parameter set stable).
 inline constexpr double smallest_recovery_dt = 1e-6;  // s
 
-// Recovery from divergence for one simulation: a recent sound state to roll back to.
+// After a rollback dt doubles back toward the chosen one each time the run has gone this long
+// without diverging. Simulated time, not steps or wall time: deterministic in a replay, and
+// the same stretch of motion at any dt, long enough for the swing or fling that diverged to
+// pass, short enough that three halvings heal within 1.5 s.
+inline constexpr double sound_seconds_before_growth = 0.5;  // s, simulated
+
+// Recovery from divergence for one simulation: a recent sound state to roll back to, and how
+// long the run has been sound since dt last changed.
 struct Recovery {
     std::optional<Simulation> last_good;
     double last_good_time = -1.0;  // s, simulated
     int recoveries = 0;
+    // s, simulated: run without divergence since the last rollback, growth or restart.
+    double sound_seconds = 0.0;
+    // s, simulated: how long dt must hold before it grows. Doubles each time a grown dt
+    // diverges before it has held this long, so parameters that cannot hold the chosen dt
+    // settle at one that can, retried ever more rarely instead of rolled back every second.
+    double growth_wait = sound_seconds_before_growth;
+    bool trying_grown_dt = false;  // dt grew and has not yet held for growth_wait
 
     void forget() {
         last_good.reset();
         last_good_time = -1.0;
+        restart_growth();
+    }
+    // dt is where it was chosen, or the cloth is new: no history of what held applies.
+    void restart_growth() {
+        sound_seconds = 0.0;
+        growth_wait = sound_seconds_before_growth;
+        trying_grown_dt = false;
     }
     // One step. On divergence: rolls back to the last sound state keeping the parameters as
     // they are now, halves dt, lets go of any drag, and returns false with `message` saying
     // what happened; if halving would go below smallest_recovery_dt it restarts the scene at
-    // `restart_dt` instead.
-    bool step(Simulation& simulation, double restart_dt, std::string& message);
+    // `chosen_dt` instead. After growth_wait of sound steps below `chosen_dt`, doubles dt (at
+    // most to `chosen_dt`) and returns true with `message` saying so; otherwise `message` is
+    // left as it was.
+    bool step(Simulation& simulation, double chosen_dt, std::string& message);
 };
 
 // A run shown beside the main one: same cloth, same hand, its own integrator and dt.
@@ -72,8 +95,9 @@ struct Companion {
     Simulation simulation;
     view::ClothView cloth_view;
     Recovery recovery;
-    double restart_dt = 0.0;  // s, its own dt as chosen: what a hopeless run restarts with
-    double seconds = 0.0;     // stepping in the last frame, s
+    // s, its own dt as chosen: what recovery grows dt back to and a hopeless run restarts with
+    double restart_dt = 0.0;
+    double seconds = 0.0;  // stepping in the last frame, s
 };
 
 struct DemoState {
@@ -83,7 +107,9 @@ struct DemoState {
     Simulation simulation;
     view::ClothView cloth_view;
     Recovery recovery;
-    double restart_dt = 0.0;  // s, dt a hopeless run restarts with: the scene's
+    // s, dt as chosen (the scene's, or the last one set in the panel): what recovery grows dt
+    // back to, R restores, and a hopeless run restarts with
+    double restart_dt = 0.0;
     std::vector<Companion> companions;
     view::FrameOptions frame_options;
     float ground_height = 0.0f;
@@ -113,7 +139,8 @@ struct DemoState {
 
     // Takes `steps` steps of the main run, each companion following to the same simulated
     // time, applying the replayed events that fall due. Stops early when the main run
-    // diverges and recovers (see Recovery). Returns the steps the main run took.
+    // diverges and recovers (see Recovery); says when a run's dt grows back. Returns the
+    // steps the main run took.
     int step(int steps);
 
     // The runs side by side: 0 is the main run, 1.. the companions.
@@ -148,7 +175,8 @@ struct DemoState {
     // Moves collider `index` by `offset` (m), as the keyboard does with a sphere.
     void move_collider(std::size_t index, const Vec3d& offset);
 
-    // Back to the scene's start, keeping the parameters changed in the panel.
+    // Back to the scene's start, keeping the parameters changed in the panel, at the chosen
+    // dt (restart_dt, for the main run and each copy) with the recovery counters cleared.
     void reset_simulation();
     // Replaces the scene (the panel's picker); the running one stays if the new one fails.
     bool load_scene(const std::string& path, std::string& error);

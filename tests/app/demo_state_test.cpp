@@ -358,7 +358,7 @@ TEST(DemoState, StiffnessAndDtPushedByOrdersOfMagnitudeRecoverAndKeepTheUsersCho
               2.0 * estimated_step_limit(state.simulation.cloth(),
                                          state.simulation.force_field().air_drag,
                                          state.simulation.integrator()));
-    // And it keeps running there.
+    // And it keeps running, finite, while recovery retries the chosen 10 ms ever more rarely.
     for (int frame = 0; frame < 20; ++frame) state.step(60);
     EXPECT_TRUE(finite_state(state.simulation.cloth()));
 }
@@ -402,6 +402,92 @@ TEST(DemoState, MassByOrdersOfMagnitudeMidRunStaysFiniteOrRecovers) {
             ASSERT_TRUE(finite_state(state.simulation.cloth())) << mass;
         }
     }
+}
+
+// ---- recovery that heals (issue 17) -------------------------------------------------------------
+
+// Light particles (k/m 33× the scene's: a step limit near 0.35 ms) make the scene's 1 ms
+// diverge within a few steps; steps until the main run and its copy have both rolled back.
+void diverge_once(DemoState& state) {
+    ASSERT_FALSE(state.change({"cloth.particle_mass=0.0003"}));
+    for (int frame = 0; frame < 100; ++frame) {
+        state.step(16);
+        if (state.recovery.recoveries > 0 && state.companions[0].recovery.recoveries > 0) break;
+    }
+    ASSERT_GE(state.recovery.recoveries, 1);
+    ASSERT_GE(state.companions[0].recovery.recoveries, 1);
+}
+
+TEST(DemoState, AfterARollbackDtGrowsBackToTheChosenOneOnceStepsAreSound) {
+    DemoState state = demo();  // 1 ms, the scene's
+    state.add_companion(Integrator::velocity_verlet, 0.0008);
+    diverge_once(state);
+    // The particles' mass back as the scene has it: 1 ms holds again (the limit is ~2 ms).
+    // The edit does not name dt, so the halved dt it carries is not a new choice.
+    ASSERT_FALSE(state.change({"cloth.particle_mass=0.01"}));
+    const Simulation& copy = state.companions[0].simulation;
+    ASSERT_LT(state.simulation.dt(), 0.001);
+    ASSERT_LT(copy.dt(), 0.0008);
+    const int recoveries = state.recovery.recoveries;
+    // Sound for half a second at each dt, then doubled: at most three doublings (1 ms down
+    // to an eighth) and 1.5 s; 3 s of simulated time is ample.
+    const double healed_by = state.simulation.time() + 3.0;
+    bool said_restored = false;
+    while (state.simulation.time() < healed_by) {
+        ASSERT_EQ(state.step(16), 16) << state.message;
+        said_restored |= state.message.find("dt restored to 1 ms") != std::string::npos;
+    }
+    EXPECT_EQ(state.recovery.recoveries, recoveries);
+    EXPECT_EQ(state.simulation.dt(), 0.001);  // exactly: doubling undoes halving
+    EXPECT_EQ(copy.dt(), 0.0008);
+    EXPECT_TRUE(said_restored);
+    EXPECT_EQ(state.simulation.scene().solver.dt, 0.001);  // what a saved scene would say
+}
+
+TEST(DemoState, DtDoesNotGrowBeforeHalfASecondOfSoundSteps) {
+    DemoState state = demo();
+    state.add_companion(Integrator::symplectic_euler, 0.001);
+    diverge_once(state);
+    ASSERT_FALSE(state.change({"cloth.particle_mass=0.01"}));
+    const double halved = state.simulation.dt();
+    const double rolled_back_to = state.simulation.time() - state.recovery.sound_seconds;
+    while (state.simulation.time() < rolled_back_to + 0.45) state.step(1);
+    EXPECT_EQ(state.simulation.dt(), halved);
+    while (state.simulation.time() < rolled_back_to + 0.55) state.step(1);
+    EXPECT_EQ(state.simulation.dt(), 2.0 * halved);
+}
+
+TEST(DemoState, ResetRestoresTheChosenDtAndClearsTheRecoveries) {
+    DemoState state = demo();
+    state.add_companion(Integrator::rk4, 0.002);
+    // A dt set in the panel is the chosen one from then on, for the main run and a copy; an
+    // edit of the copy that does not name dt leaves its choice alone.
+    ASSERT_FALSE(state.change({"solver.dt=0.0008"}));
+    ASSERT_FALSE(state.change_companion(0, {"solver.dt=0.0016"}));
+    diverge_once(state);  // the light particles stay: dt stays halved until R
+    ASSERT_FALSE(state.change_companion(0, {"solver.integrator=verlet"}));
+    ASSERT_LT(state.simulation.dt(), 0.0008);
+    ASSERT_LT(state.companions[0].simulation.dt(), 0.0016);
+    state.reset_simulation();
+    EXPECT_EQ(state.simulation.dt(), 0.0008);
+    EXPECT_EQ(state.companions[0].simulation.dt(), 0.0016);
+    EXPECT_EQ(state.recovery.recoveries, 0);
+    EXPECT_EQ(state.companions[0].recovery.recoveries, 0);
+    EXPECT_EQ(state.simulation.time(), 0.0);
+}
+
+TEST(DemoState, ParametersThatCannotHoldTheChosenDtAreRetriedEverMoreRarely) {
+    DemoState state = demo();
+    // Unstable at 1 ms for good: every return to it diverges. Each failed return doubles the
+    // wait before the next (0.5, 1, 2, 4 s), so 8 s of simulated time see at most 5 rollbacks
+    // past the first few halvings, where a fixed half-second wait would see one a second.
+    ASSERT_FALSE(state.change({"cloth.particle_mass=0.0003"}));
+    while (state.simulation.time() < 1.0) state.step(16);
+    const int settled = state.recovery.recoveries;
+    const double from = state.simulation.time();
+    while (state.simulation.time() < from + 8.0) state.step(16);
+    EXPECT_LE(state.recovery.recoveries - settled, 5);
+    EXPECT_TRUE(finite_state(state.simulation.cloth()));
 }
 
 }  // namespace

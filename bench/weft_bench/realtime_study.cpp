@@ -36,7 +36,8 @@ constexpr double not_measured = std::numeric_limits<double>::quiet_NaN();
 // methods are compared on the springs alone, which is all XPBD and the plain step model.
 Scene resized_sheet(const Scene& base, int n) {
     Scene scene = base;
-    const double side = (base.cloth.cols - 1) * base.cloth.spacing;  // m
+    // m, the longer side (a sheet of one column has no width)
+    const double side = (std::max(base.cloth.cols, base.cloth.rows) - 1) * base.cloth.spacing;
     const double spacing = side / (n - 1);
     const double mass_ratio = (spacing / base.cloth.spacing) * (spacing / base.cloth.spacing);
     scene.cloth.spacing = spacing;
@@ -260,9 +261,12 @@ int run_realtime_study(const RealtimeOptions& options) {
         const double draw = drawing_seconds(scene, reference.cloth());
 
         // weft's step against the plain float step, same dt and state, interleaved.
+        // (The scene may ask for another integrator: the cloth-like scenes use implicit Euler.)
         Simulation weft_run = start, weft_single = start;
-        weft_run.set_dt(explicit_dt);
-        weft_single.set_dt(explicit_dt);
+        for (Simulation* run : {&weft_run, &weft_single}) {
+            run->set_integrator(Integrator::symplectic_euler);
+            run->set_dt(explicit_dt);
+        }
         weft_single.set_thread_count(1);
         PlainFloatCloth plain(cloth, start.force_field());
         const Interleaved versus = interleaved_seconds(

@@ -230,7 +230,7 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     const bool multilevel = settings.multilevel;
     if (multilevel) {
         solver.multilevel.weight = settings.coarse_weight;
-        solver.multilevel.build(job);
+        solver.multilevel.build(job, pool);
         r_z += solver.multilevel.apply(job, pool);
     }
     const double scale = std::sqrt(sum_rows(row_sums.third, rows));

@@ -84,40 +84,73 @@ void invert_level(ImplicitCoarseLevel& level) {
         invert_symmetric(&level.diagonal[6 * n], &level.inverse[6 * n]);
 }
 
+// A fine spring's coupling block A_pq = -B, B = iso I + along u uᵀ, or false where the
+// spring is missing or an end is pinned (the filtered system has no coupling there).
+bool fine_coupling(const implicit_kernel::Job& job, const implicit_kernel::DirectionTerms& d, int r,
+                   int c, double coupling[6]) {
+    const int r2 = r + d.row_step, c2 = c + d.col_step;
+    if (r2 >= job.rows || c2 < 0 || c2 >= job.cols) return false;
+    const std::size_t i = job.pad + static_cast<std::size_t>(r) * job.cols + c;
+    const std::size_t j = job.pad + static_cast<std::size_t>(r2) * job.cols + c2;
+    if (job.free[i] == 0.0f || job.free[j] == 0.0f) return false;
+    const double iso = d.iso[i], along = d.along[i];
+    if (iso == 0.0 && along == 0.0) return false;
+    const double ux = d.ux[i], uy = d.uy[i], uz = d.uz[i];
+    coupling[0] = -(iso + along * ux * ux);
+    coupling[1] = -(iso + along * uy * uy);
+    coupling[2] = -(iso + along * uz * uz);
+    coupling[3] = -along * ux * uy;
+    coupling[4] = -along * ux * uz;
+    coupling[5] = -along * uy * uz;
+    return true;
+}
+
 // The first coarse level, from the fine stencil: A_c = Pᵀ F A F P over the free particles.
-void build_from_fine(ImplicitCoarseLevel& level, const implicit_kernel::Job& job) {
+// Each node gathers what is its own (so rows of nodes can be built on any thread, in the
+// same order): its particles' diagonal blocks, twice each spring inside it, the springs to
+// its forward neighbours, and for its (0, 1) neighbour also the springs that start there and
+// end in it.
+void build_from_fine(ImplicitCoarseLevel& level, const implicit_kernel::Job& job,
+                     WorkerPool* pool) {
     size_level(level, (job.rows + 1) / 2, (job.cols + 1) / 2);
-    for (int r = 0; r < job.rows; ++r) {
-        for (int c = 0; c < job.cols; ++c) {
-            const std::size_t p = static_cast<std::size_t>(r) * job.cols + c;
-            const std::size_t i = job.pad + p;
-            if (job.free[i] == 0.0f) continue;
-            const int node = aggregate(r, c, level.cols);
-            double block[6];
-            for (int e = 0; e < 6; ++e) block[e] = job.diagonal[e][i];
-            add_block(&level.diagonal[6 * static_cast<std::size_t>(node)], block, 1.0);
-            for (int k = 0; k < job.direction_count; ++k) {
-                const implicit_kernel::DirectionTerms& d = job.directions[k];
-                const int r2 = r + d.row_step, c2 = c + d.col_step;
-                if (r2 >= job.rows || c2 < 0 || c2 >= job.cols) continue;
-                const std::size_t j = job.pad + static_cast<std::size_t>(r2) * job.cols + c2;
-                if (job.free[j] == 0.0f) continue;
-                const double iso = d.iso[i], along = d.along[i];
-                if (iso == 0.0 && along == 0.0) continue;
-                const double ux = d.ux[i], uy = d.uy[i], uz = d.uz[i];
-                // A_pq = -B, B = iso I + along u uᵀ.
-                const double coupling[6] = {-(iso + along * ux * ux), -(iso + along * uy * uy),
-                                            -(iso + along * uz * uz), -along * ux * uy,
-                                            -along * ux * uz,         -along * uy * uz};
-                const int other = aggregate(r2, c2, level.cols);
-                if (other == node)
-                    add_block(&level.diagonal[6 * static_cast<std::size_t>(node)], coupling, 2.0);
-                else
-                    add_coupling(level, node, other, r2 / 2 - r / 2, c2 / 2 - c / 2, coupling, 1.0);
+    auto build_node = [&](int row, int col) {
+        const std::size_t node = static_cast<std::size_t>(row) * level.cols + col;
+        double* diagonal = &level.diagonal[6 * node];
+        double coupling[6];
+        for (int r = 2 * row; r < std::min(2 * row + 2, job.rows); ++r)
+            for (int c = 2 * col; c < std::min(2 * col + 2, job.cols); ++c) {
+                const std::size_t i = job.pad + static_cast<std::size_t>(r) * job.cols + c;
+                if (job.free[i] == 0.0f) continue;
+                for (int e = 0; e < 6; ++e) diagonal[e] += job.diagonal[e][i];
+                for (int k = 0; k < job.direction_count; ++k) {
+                    const implicit_kernel::DirectionTerms& d = job.directions[k];
+                    if (!fine_coupling(job, d, r, c, coupling)) continue;
+                    const int row_step = (r + d.row_step) / 2 - row;
+                    const int col_step = (c + d.col_step) / 2 - col;
+                    const int slot = slot_of(row_step, col_step);
+                    if (slot == -2)
+                        add_block(diagonal, coupling, 2.0);
+                    else if (slot >= 0)
+                        add_block(&level.neighbours[(node * 4 + slot) * 6], coupling, 1.0);
+                    // slot -1, (0, -1): the node to the left gathers it as its (0, 1) coupling.
+                }
             }
-        }
-    }
-    invert_level(level);
+        // Springs from the (0, 1) neighbour that end here.
+        if (col + 1 < level.cols)
+            for (int r = 2 * row; r < std::min(2 * row + 2, job.rows); ++r)
+                for (int c = 2 * col + 2; c < std::min(2 * col + 4, job.cols); ++c)
+                    for (int k = 0; k < job.direction_count; ++k) {
+                        const implicit_kernel::DirectionTerms& d = job.directions[k];
+                        if ((r + d.row_step) / 2 != row || (c + d.col_step) / 2 != col) continue;
+                        if (fine_coupling(job, d, r, c, coupling))
+                            add_block(&level.neighbours[(node * 4 + 0) * 6], coupling, 1.0);
+                    }
+        invert_symmetric(diagonal, &level.inverse[6 * node]);
+    };
+    over_rows(level.rows, job.rows * job.cols, pool, [&](int begin, int end) {
+        for (int row = begin; row < end; ++row)
+            for (int col = 0; col < level.cols; ++col) build_node(row, col);
+    });
 }
 
 // The next coarse level from a coarse one, by the same aggregation.
@@ -182,7 +215,7 @@ void add_coarser_corrections(std::vector<ImplicitCoarseLevel>& levels, std::size
 
 }  // namespace
 
-void ImplicitMultilevel::build(const implicit_kernel::Job& job) {
+void ImplicitMultilevel::build(const implicit_kernel::Job& job, WorkerPool* pool) {
     // Down to a level of at most 4 nodes a side.
     std::size_t count = 0;
     for (int rows = job.rows, cols = job.cols; rows > 4 || cols > 4;
@@ -190,7 +223,7 @@ void ImplicitMultilevel::build(const implicit_kernel::Job& job) {
         ++count;
     levels.resize(count);
     if (count == 0) return;
-    build_from_fine(levels[0], job);
+    build_from_fine(levels[0], job, pool);
     for (std::size_t l = 1; l < count; ++l) build_from_coarse(levels[l], levels[l - 1]);
 }
 

@@ -36,7 +36,7 @@ struct ImplicitMultilevel {
 
     // Builds every coarse level from the fine system of `job` (its direction terms, the
     // diagonal blocks and the free mask of the setup and residual passes).
-    void build(const implicit_kernel::Job& job);
+    void build(const implicit_kernel::Job& job, WorkerPool* pool);
     // z += P (coarse correction of Pᵀ r) over the whole fine grid; returns r · (what it
     // added to z), so the caller's r · z stays exact without another pass.
     double apply(const implicit_kernel::Job& job, WorkerPool* pool);

@@ -74,6 +74,12 @@ void over_rows(int rows, int fine_particles, WorkerPool* pool, Pass&& pass) {
         pass(0, rows);
 }
 
+// out += mask · add over n floats.
+void add_masked(float* __restrict out, const float* __restrict mask, const float* __restrict add,
+                int n) {
+    for (int c = 0; c < n; ++c) out[c] += mask[c] * add[c];
+}
+
 int aggregate(int row, int col, int coarse_cols) {
     return (row / 2) * coarse_cols + col / 2;
 }
@@ -253,20 +259,27 @@ double ImplicitMultilevel::apply(const implicit_kernel::Job& job, WorkerPool* po
     double added = 0.0;  // r · P x_c = (Pᵀ r) · x_c, in node order
     for (std::size_t n = 0; n < first.residual.size(); ++n)
         added += weight * first.residual[n] * first.correction[n];
+    // The correction spread along each coarse row's fine columns, in single precision, so
+    // the fine pass below is a plain vector loop.
+    const auto cols = static_cast<std::size_t>(job.cols);
+    spread.resize(3 * static_cast<std::size_t>(first.rows) * cols);
+    for (int row = 0; row < first.rows; ++row) {
+        float* x = &spread[3 * static_cast<std::size_t>(row) * cols];
+        for (std::size_t c = 0; c < cols; ++c) {
+            const double* correction = &first.correction[3 * (row * first.cols + c / 2)];
+            x[c] = static_cast<float>(weight * correction[0]);
+            x[cols + c] = static_cast<float>(weight * correction[1]);
+            x[2 * cols + c] = static_cast<float>(weight * correction[2]);
+        }
+    }
     // Pass 2, by fine rows: z += P x_c on the free particles.
     over_rows(job.rows, job.rows * job.cols, pool, [&](int begin, int end) {
         for (int r = begin; r < end; ++r) {
-            const double* correction =
-                &first.correction[3 * static_cast<std::size_t>(r / 2) * first.cols];
-            const std::size_t base = job.pad + static_cast<std::size_t>(r) * job.cols;
-            for (int c = 0; c < job.cols; ++c) {
-                const std::size_t i = base + c;
-                const std::size_t m = 3 * static_cast<std::size_t>(c / 2);
-                const float f = job.free[i];
-                job.preconditioned.x[i] += f * static_cast<float>(weight * correction[m]);
-                job.preconditioned.y[i] += f * static_cast<float>(weight * correction[m + 1]);
-                job.preconditioned.z[i] += f * static_cast<float>(weight * correction[m + 2]);
-            }
+            const float* x = &spread[3 * static_cast<std::size_t>(r / 2) * cols];
+            const std::size_t base = job.pad + static_cast<std::size_t>(r) * cols;
+            add_masked(job.preconditioned.x + base, job.free + base, x, job.cols);
+            add_masked(job.preconditioned.y + base, job.free + base, x + cols, job.cols);
+            add_masked(job.preconditioned.z + base, job.free + base, x + 2 * cols, job.cols);
         }
     });
     return added;

@@ -33,6 +33,7 @@ struct ImplicitCoarseLevel {
 struct ImplicitMultilevel {
     std::vector<ImplicitCoarseLevel> levels;  // finest coarse level first
     double weight = 1.0;                      // scale of each coarse correction
+    std::vector<float> spread;  // the first level's correction along fine columns (x, y, z rows)
 
     // Builds every coarse level from the fine system of `job` (its direction terms, the
     // diagonal blocks and the free mask of the setup and residual passes).

@@ -13,6 +13,7 @@
 #include "app/atomic_file.h"
 #include "app/screenshot_names.h"
 #include "app/session_record.h"
+#include "app/status_text.h"
 #include "sim/energy.h"
 #include "sim/stability_limit.h"
 
@@ -93,6 +94,8 @@ void statistics(DemoState& state) {
                 state.paused ? "   (paused)" : "");
     ImGui::Text("%zu particles, %zu springs, %d threads", cloth.particle_count(),
                 cloth.spring_count(), state.simulation.thread_count());
+    // Implicit Euler's cost and accuracy per step hang on its conjugate-gradient solve.
+    if (auto solve = linear_solve_text(state.simulation)) ImGui::TextUnformatted(solve->c_str());
     if (!s.energy.empty()) {
         ImGui::Text("energy %.4g J", s.energy.back());
         ImGui::PlotLines("##energy", s.energy.data(), static_cast<int>(s.energy.size()), 0, nullptr,

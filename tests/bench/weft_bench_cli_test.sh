@@ -48,6 +48,16 @@ expect 0 quiet -- precision "$scenes/sheet_on_sphere.toml" --set cloth.rows=3 --
 check "contact scene measured by invariants" test -s "$work/prec/invariants_sheet_on_sphere.csv"
 check "no trajectory errors for it" test ! -e "$work/prec/precision.csv"
 
+# --repeats 1 is one timed run per point (issue 18: it used to take the median of no runs and
+# crash). A 2x2 default sheet: six integrators x six steps, each with a measured time.
+expect 0 quiet -- precision "$scenes/hanging_sheet.toml" --set cloth.rows=2 --set cloth.cols=2 \
+  --repeats 1 --out "$work/prec1"
+csv=$work/prec1/precision.csv
+check "precision --repeats 1: 36 rows" test "$(tail -n +2 "$csv" | wc -l)" -eq 36
+check "precision --repeats 1: every time is a number > 0" \
+  awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "seconds_per_simulated_second") c = i }
+           NR > 1 && !($c + 0 > 0) { exit 1 } END { if (!c) exit 1 }' "$csv"
+
 # replay: a drag recorded in the window (assets/sessions/fling.toml), replayed by every
 # integrator; the recorded one must end in the recorded state bit for bit.
 expect 0 '' -- replay "$2/assets/sessions/fling.toml" --out "$work/replay"

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # End-to-end tests of the weft command line: exit statuses, messages on stderr and the dump
-# format, as the design notes fix them. Usage: cli_test.sh WEFT_BINARY SOURCE_DIR
+# format, as the design notes fix them. Usage: cli_test.sh WEFT_BINARY SOURCE_DIR VERSION
+# (VERSION: the CMake project version, which --version must print).
 set -uo pipefail
 weft=$1
 scenes=$2/assets/scenes
+version=$3
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
@@ -52,6 +54,9 @@ expect 2 '^error: --headless: needs --steps' -- --headless "$scenes/hanging_shee
 expect 2 '^error: --frobnicate: unknown option' -- --frobnicate
 expect 2 "^error: $work/nowhere/x.csv: cannot write" -- --headless "$scenes/hanging_sheet.toml" --steps 1 --dump "$work/nowhere/x.csv"
 expect 0 quiet -- --help
+check "--help prints the usage on stdout" grep -q '^  weft --help | --version$' "$work/out"
+expect 0 quiet -- --version
+check "--version prints the project version" test "$(cat "$work/out")" = "weft $version"
 
 # Replaying a recording headless (the window records; here a recording is written by hand):
 # status 0 when the state ends as recorded, 4 when it does not, 2 for a bad recording.

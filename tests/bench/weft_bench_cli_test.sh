@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # weft-bench's command line: bad numbers are refused with status 2 and `error: --OPTION: ...`
 # (never silently replaced), and a tiny invariant study writes the documented CSV and plots.
-# Usage: weft_bench_cli_test.sh WEFT_BENCH_BINARY SOURCE_DIR
+# Usage: weft_bench_cli_test.sh WEFT_BENCH_BINARY SOURCE_DIR VERSION
+# (VERSION: the CMake project version, which --version must print).
 set -uo pipefail
 bench=$1
 scenes=$2/assets/scenes
+version=$3
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
@@ -12,6 +14,21 @@ passes=0
 
 program=$bench
 source "$(dirname "$0")/../cli_expect.sh"
+
+# Help and version, as the design's command line promises: usage on stdout, status 0.
+expect 0 quiet -- --help
+for study in precision invariants stability throughput replay; do
+  check "--help names $study" grep -q "^  weft-bench $study " "$work/out"
+done
+expect 0 quiet -- --version
+check "--version prints the project version" test "$(cat "$work/out")" = "weft-bench $version"
+for study in precision invariants stability throughput replay; do
+  # Help wins over everything else on the line, even a value that would be refused.
+  expect 0 quiet -- $study --help --out "$work/x"
+  check "$study --help starts with its usage" test "$(sed -n 2p "$work/out" | awk '{ print $1, $2 }')" = "weft-bench $study"
+  expect 0 quiet -- $study --repeats 0 -h
+done
+expect 2 "^error: unknown study 'precisoin'" -- precisoin --help
 
 # Strict numbers: the whole text, in range, or status 2 before anything runs.
 for study in precision invariants; do

@@ -49,6 +49,15 @@ expect 2 '^error: --set' -- --headless "$scenes/hanging_sheet.toml" --steps 1 --
 expect 2 '^error: --set cloth.(rows|cols): .*4194304' -- --headless "$scenes/hanging_sheet.toml" --steps 1 \
   --set cloth.rows=100000 --set cloth.cols=100000
 expect 2 "^error: $work/missing.toml: " -- --headless "$work/missing.toml" --steps 1
+# A directory reads as an empty file, which is the default scene: it must be refused, by the
+# headless run, a replay, and the window before it opens one (no video driver here: a window
+# that tried would fail with another message).
+expect 2 "^error: $scenes: is a directory, not a scene file$" -- --headless "$scenes" --steps 10
+expect 2 "^error: $scenes: is a directory, not a session file$" -- --headless --replay "$scenes"
+program=env
+expect 2 "^error: $scenes: is a directory, not a scene file$" -- -u DISPLAY -u WAYLAND_DISPLAY \
+  SDL_VIDEODRIVER=no-such-driver "$weft" "$scenes"
+program=$weft
 expect 2 '^error: --steps: ' -- --headless "$scenes/hanging_sheet.toml" --steps many
 expect 2 '^error: --headless: needs --steps' -- --headless "$scenes/hanging_sheet.toml"
 expect 2 '^error: --frobnicate: unknown option' -- --frobnicate

@@ -44,6 +44,8 @@ done
 expect 2 "^error: --duration: '1e999' must be" -- stability --duration 1e999 --out "$work/x"
 expect 2 "^error: unknown study 'precisoin'" -- precisoin
 expect 2 "^error: unknown or incomplete option --repeats" -- invariants --repeats
+# A directory is not a scene (it would read as the default one).
+expect 2 "^error: $scenes: is a directory, not a scene file$" -- stability "$scenes" --out "$work/x"
 check "nothing was written for refused input" test ! -e "$work/x"
 
 # A tiny invariant study: 4x4 tearing sheet, 8 ms per run. One reference row, then six

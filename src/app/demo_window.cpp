@@ -293,7 +293,8 @@ void draw_run_labels(const DemoState& state, const Window& w) {
                     measure_energy(simulation.cloth(), simulation.force_field()).total(),
                     simulation.time());
         if (auto solve = linear_solve_text(simulation)) ImGui::TextUnformatted(solve->c_str());
-        if (recoveries > 0) ImGui::Text("recovered %d times", recoveries);
+        if (recoveries > 0)
+            ImGui::Text("recovered %s", counted(recoveries, "time", "times").c_str());
         ImGui::End();
     }
 }

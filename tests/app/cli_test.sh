@@ -82,6 +82,8 @@ check "the pins were released at step 100" awk -F, 'NR == 2 && $4 == 0.6 { exit 
 write_session "$work/session.toml" "0x$actual_hash"
 expect 0 quiet -- --headless --replay "$work/session.toml"
 check "a matching replay says so" grep -q "matches the recording" "$work/out"
+# Counts in the words' right number: this recording has one event.
+check "a replay counts its one event in the singular" grep -q "^replayed 300 steps and 1 event of " "$work/out"
 printf 'format = 1\nsteps = 10\nfinal_state_hash = "0x00"\nscene = ""\n' >"$work/bad_session.toml"
 expect 2 "^error: $work/bad_session.toml:3:" -- --headless --replay "$work/bad_session.toml"
 expect 2 "^error: $work/none.toml: cannot read" -- --headless --replay "$work/none.toml"

@@ -7,16 +7,20 @@
 //                        [--out DIR] [--duration SECONDS]
 //   weft-bench throughput [SCENE.toml] [--set K=V]... [--out DIR] [--sizes N,N,...]
 //   weft-bench replay SESSION.toml [--out DIR]
+//   weft-bench realtime [SCENE.toml] [--set K=V]... [--out DIR] [--sizes N,N,...]
+//                       [--duration SECONDS] [--max-run-seconds SECONDS]
 //   weft-bench --help | --version,  weft-bench STUDY --help
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "invariant_study.h"
 #include "precision_study.h"
+#include "realtime_study.h"
 #include "replay_study.h"
 #include "stability_study.h"
 #include "strict_number.h"
@@ -63,6 +67,15 @@ constexpr StudyHelp studies[] = {
      "  --sizes N,N,...     particles per side (3 to 4096, default 32,64,128,256)\n"},
     {"replay", "  weft-bench replay SESSION.toml [--out DIR]\n",
      "Replays a recorded session (weft --record) with every integrator in turn, as a hard case.\n"},
+    {"realtime",
+     "  weft-bench realtime [SCENE.toml] [--set K=V]... [--out DIR] [--sizes N,N,...]\n"
+     "                      [--duration SECONDS] [--max-run-seconds SECONDS]\n",
+     "Each method at the 60 fps frame budget: weft's symplectic and implicit Euler, XPBD with\n"
+     "substeps and a plain float step; cost per frame, error, stretch (default scene:\n"
+     "cloth_128.toml if there is one, else large_sheet.toml).\n"
+     "  --sizes N,N,...     particles per side (3 to 4096, default 32,64,128,256)\n"
+     "  --duration SECONDS  simulated time of each run (default 0.5)\n"
+     "  --max-run-seconds SECONDS  wall-clock cap of one method's run (default 30)\n"},
 };
 
 const char* const set_option =
@@ -99,7 +112,8 @@ bool is_help(const std::string& arg) {
 int main(int argc, char** argv) {
     const std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty())
-        return usage("which study? precision, invariants, stability, throughput or replay");
+        return usage(
+            "which study? precision, invariants, stability, throughput, replay or realtime");
     if (is_help(args[0])) {
         print_synopses(stdout);
         std::printf(
@@ -125,8 +139,9 @@ int main(int argc, char** argv) {
     std::vector<std::string> scenes, overrides, sweeps;
     std::string out_dir = "bench-out";
     int repeats = 3;
-    std::optional<double> duration;  // s; each study has its own default
-    std::vector<int> sizes;          // throughput: particles per side (default: the study's own)
+    std::optional<double> duration;         // s; each study has its own default
+    std::optional<double> max_run_seconds;  // realtime: wall-clock cap of one method's run
+    std::vector<int> sizes;  // throughput, realtime: particles per side (default: the study's own)
     for (std::size_t a = 1; a < args.size(); ++a) {
         const std::string& arg = args[a];
         const bool has_value = a + 1 < args.size();
@@ -145,6 +160,10 @@ int main(int argc, char** argv) {
             std::string why;
             duration = weft::bench::parse_number_above(args[++a], 0.0, why);
             if (!duration) return usage(("--duration: " + why).c_str());
+        } else if (arg == "--max-run-seconds" && has_value) {
+            std::string why;
+            max_run_seconds = weft::bench::parse_number_above(args[++a], 0.0, why);
+            if (!max_run_seconds) return usage(("--max-run-seconds: " + why).c_str());
         } else if (arg == "--sizes" && has_value) {
             const std::string list = args[++a];
             for (std::size_t at = 0; at <= list.size();) {
@@ -189,6 +208,20 @@ int main(int argc, char** argv) {
         if (!sizes.empty()) options.sizes = sizes;
         options.demo_scene = scenes_dir + "/large_sheet.toml";
         return weft::bench::run_throughput_study(options);
+    }
+    if (study == "realtime") {
+        if (scenes.size() > 1) return usage("realtime takes one scene");
+        // The cloth-like material of issue 17 where it has landed, else the large sheet.
+        const std::string cloth_like = scenes_dir + "/cloth_128.toml";
+        const std::string scene = !scenes.empty() ? scenes[0]
+                                  : std::filesystem::exists(cloth_like)
+                                      ? cloth_like
+                                      : scenes_dir + "/large_sheet.toml";
+        weft::bench::RealtimeOptions options{scene, overrides, out_dir};
+        if (!sizes.empty()) options.sizes = sizes;
+        if (duration) options.duration = *duration;
+        if (max_run_seconds) options.max_run_seconds = *max_run_seconds;
+        return weft::bench::run_realtime_study(options);
     }
     if (study == "replay") {
         if (scenes.size() != 1) return usage("replay takes one recorded session (weft --record)");

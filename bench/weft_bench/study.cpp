@@ -59,6 +59,60 @@ double min_seconds(int repeats, const std::function<void()>& work) {
     return least;
 }
 
+double seconds_per_call(const std::function<void()>& work) {
+    work();
+    std::vector<double> samples;
+    for (int sample = 0; sample < 3; ++sample) {
+        long long calls = 0;
+        const double elapsed = seconds_of([&] {
+            const auto start = std::chrono::steady_clock::now();
+            do {
+                work();
+                ++calls;
+            } while (
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() <
+                0.2);
+        });
+        samples.push_back(elapsed / static_cast<double>(calls));
+    }
+    std::sort(samples.begin(), samples.end());
+    return samples[1];
+}
+
+Interleaved interleaved_seconds(const std::vector<std::function<void()>>& works, int rounds,
+                                double slice_seconds) {
+    for (const auto& work : works) work();
+    std::vector<std::vector<double>> samples(works.size());
+    for (int round = 0; round < rounds; ++round) {
+        for (std::size_t k = 0; k < works.size(); ++k) {
+            long long calls = 0;
+            const auto start = std::chrono::steady_clock::now();
+            double elapsed = 0.0;
+            do {
+                works[k]();
+                ++calls;
+                elapsed =
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            } while (elapsed < slice_seconds);
+            samples[k].push_back(elapsed / static_cast<double>(calls));
+        }
+    }
+    auto median = [](std::vector<double> values) {
+        std::sort(values.begin(), values.end());
+        return values[values.size() / 2];
+    };
+    Interleaved result;
+    for (std::size_t k = 0; k < works.size(); ++k) {
+        result.seconds.push_back(median(samples[k]));
+        result.fastest.push_back(*std::min_element(samples[k].begin(), samples[k].end()));
+        std::vector<double> ratios;
+        for (int round = 0; round < rounds; ++round)
+            ratios.push_back(samples[k][round] / samples[0][round]);
+        result.ratio_to_first.push_back(median(ratios));
+    }
+    return result;
+}
+
 const char* short_name(Integrator integrator) {
     return integrator_name(integrator);
 }

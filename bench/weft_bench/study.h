@@ -32,6 +32,22 @@ double seconds_of(const std::function<void()>& work);
 double median_seconds(int repeats, const std::function<void()>& work);
 double min_seconds(int repeats, const std::function<void()>& work);
 
+// Seconds per call of `work`: repeated until at least 0.2 s have passed, the median of
+// three such measurements, after one warm-up call.
+double seconds_per_call(const std::function<void()>& work);
+
+// Median seconds per call of each of several callables, measured in interleaved rounds (a
+// slice of each in turn, `rounds` times) so that load from other processes on the machine
+// falls on all of them alike; also the median over rounds of each one's time divided by the
+// first's, the ratio least disturbed by that load.
+struct Interleaved {
+    std::vector<double> seconds;         // median per callable
+    std::vector<double> fastest;         // the fastest round's per callable
+    std::vector<double> ratio_to_first;  // median over rounds of seconds[k] / seconds[0]
+};
+Interleaved interleaved_seconds(const std::vector<std::function<void()>>& works, int rounds = 9,
+                                double slice_seconds = 0.08);
+
 const char* short_name(Integrator integrator);
 inline constexpr Integrator explicit_integrators[] = {
     Integrator::explicit_euler, Integrator::symplectic_euler, Integrator::verlet,

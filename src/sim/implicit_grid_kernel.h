@@ -54,6 +54,9 @@ struct Job {
 
     float* mass_diagonal = nullptr;  // padded: m + h air_drag (+ the drag handle's terms)
     float* free = nullptr;           // padded: 1 for a free particle, 0 for a pinned one
+    // Each particle's 3x3 diagonal block of A (zero for a pinned one), symmetric: xx yy zz
+    // xy xz yz; what the coarse levels of the preconditioner are built from.
+    float* diagonal[6] = {};
     // The preconditioner, the inverse of each particle's 3x3 diagonal block of A, symmetric:
     // xx yy zz xy xz yz.
     float* inverse_diagonal[6] = {};

@@ -230,6 +230,8 @@ void diagonal_row(const Job& job, int row) {
                 yz += along * uy * uz;
             }
         }
+        const double block[6] = {xx, yy, zz, xy, xz, yz};
+        for (int e = 0; e < 6; ++e) job.diagonal[e][i] = static_cast<float>(block[e]) * job.free[i];
         double inverse[6];
         invert_symmetric(xx, yy, zz, xy, xz, yz, inverse);
         for (int e = 0; e < 6; ++e)

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # weft-bench's command line: bad numbers are refused with status 2 and `error: --OPTION: ...`
-# (never silently replaced), and a tiny invariant study writes the documented CSV and plots.
+# (never silently replaced), tiny invariant and realtime studies write the documented CSV and
+# plots, and every study answers --help.
 # Usage: weft_bench_cli_test.sh WEFT_BENCH_BINARY SOURCE_DIR VERSION
 # (VERSION: the CMake project version, which --version must print).
 set -uo pipefail
@@ -17,12 +18,12 @@ source "$(dirname "$0")/../cli_expect.sh"
 
 # Help and version, as the design's command line promises: usage on stdout, status 0.
 expect 0 quiet -- --help
-for study in precision invariants stability throughput replay; do
+for study in precision invariants stability throughput replay realtime; do
   check "--help names $study" grep -q "^  weft-bench $study " "$work/out"
 done
 expect 0 quiet -- --version
 check "--version prints the project version" test "$(cat "$work/out")" = "weft-bench $version"
-for study in precision invariants stability throughput replay; do
+for study in precision invariants stability throughput replay realtime; do
   # Help wins over everything else on the line, even a value that would be refused.
   expect 0 quiet -- $study --help --out "$work/x"
   check "$study --help starts with its usage" test "$(sed -n 2p "$work/out" | awk '{ print $1, $2 }')" = "weft-bench $study"
@@ -86,6 +87,27 @@ check "one row per integrator" test "$(tail -n +2 "$csv" | wc -l)" -eq 6
 check "the recorded integrator reproduces the recording" grep -q '^symplectic-euler,yes,yes,0,' "$csv"
 expect 2 'error: .*missing.toml: cannot read' -- replay "$work/missing.toml" --out "$work/replay2"
 expect 2 '^error: replay takes one recorded session' -- replay --out "$work/replay3"
+
+# realtime: --help on stdout with status 0; bad numbers refused; a tiny run (an 8x8 sheet,
+# three frames) writes one CSV row per method and setting, the summary and the plot.
+expect 0 quiet -- realtime --help
+check "realtime --help describes the study" grep -q 'weft-bench realtime' "$work/out"
+expect 2 "^error: --max-run-seconds: '0' must be" -- realtime --max-run-seconds 0 --out "$work/x"
+expect 2 "^error: --sizes: '2' is out of range" -- realtime --sizes 2 --out "$work/x"
+expect 2 '^error: realtime takes one scene' -- realtime a.toml b.toml --out "$work/x"
+check "nothing was written for refused input" test ! -e "$work/x"
+expect 0 quiet -- realtime "$scenes/large_sheet.toml" --sizes 8 --duration 0.05 --out "$work/rt"
+csv=$work/rt/realtime.csv
+check "realtime CSV header" grep -q '^particles_per_side,particles,springs,method,setting,dt_s,' "$csv"
+# The weft-to-plain ratio, 1 + 3 + 4 + 1 method settings, the reference and a summary per
+# method.
+check "ratio + 9 settings + reference + 4 summaries" test "$(tail -n +2 "$csv" | wc -l)" -eq 15
+check "every row has every column" awk -F, 'NR == 1 { n = NF } NF != n { exit 1 }' "$csv"
+check "four XPBD substep counts" test "$(grep -c ',XPBD float,[0-9]* substeps,' "$csv")" -eq 4
+check "every setting ran to the end on the small sheet" \
+  test "$(grep -c ',ok$' "$csv")" -eq 9
+check "the output states the weft-to-plain-float ratio" grep -q 'the plain float step: [0-9.]* on' "$work/out"
+check "realtime plot" test -s "$work/rt/realtime_8.png"
 
 echo "$passes passed, $failures failed"
 [ "$failures" -eq 0 ]

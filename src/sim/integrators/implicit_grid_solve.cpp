@@ -63,7 +63,7 @@ void ImplicitGridSolver::prepare(int grid_rows, int grid_cols) {
     // Two rows and two columns either way, rounded to whole vectors of sixteen floats.
     pad = (2 * static_cast<std::size_t>(cols) + 2 + 15) / 16 * 16;
     stride = (count + 2 * pad + 15) / 16 * 16;
-    constexpr int arrays = 5 * implicit_kernel::max_directions + 2 + 6 + 9 * 3;
+    constexpr int arrays = 5 * implicit_kernel::max_directions + 2 + 6 + 6 + 9 * 3;
     storage.assign(stride * arrays, 0.0f);
     row_sums.assign(3 * static_cast<std::size_t>(rows), 0.0);
     static_forces.assign(count, Vec3(0.0));
@@ -83,6 +83,7 @@ ImplicitGridSolver::ImplicitGridSolver(const ImplicitGridSolver& other)
       static_forces(other.static_forces),
       zero_velocities(other.zero_velocities),
       job(other.job),
+      multilevel(other.multilevel),
       has_previous_change(other.has_previous_change),
       last_iterations(other.last_iterations),
       last_relative_residual(other.last_relative_residual) {
@@ -100,6 +101,7 @@ ImplicitGridSolver& ImplicitGridSolver::operator=(const ImplicitGridSolver& othe
     static_forces = other.static_forces;
     zero_velocities = other.zero_velocities;
     job = other.job;
+    multilevel = other.multilevel;
     has_previous_change = other.has_previous_change;
     last_iterations = other.last_iterations;
     last_relative_residual = other.last_relative_residual;
@@ -127,6 +129,7 @@ void ImplicitGridSolver::bind() {
     }
     job.mass_diagonal = take();
     job.free = take();
+    for (float*& e : job.diagonal) e = take();
     for (float*& e : job.inverse_diagonal) e = take();
     job.rhs = take3();
     job.start = take3();
@@ -224,6 +227,12 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     over_rows(solver, pool, [&](int begin, int end) { residual(job, begin, end, row_sums); });
     double r_z = sum_rows(row_sums.first, rows);
     double r_r = sum_rows(row_sums.second, rows);
+    const bool multilevel = settings.multilevel;
+    if (multilevel) {
+        solver.multilevel.weight = settings.coarse_weight;
+        solver.multilevel.build(job, pool);
+        r_z += solver.multilevel.apply(job, pool);
+    }
     const double scale = std::sqrt(sum_rows(row_sums.third, rows));
     const double target = settings.tolerance(dt) * scale;
 
@@ -249,7 +258,8 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
         const auto alpha_f = static_cast<float>(r_z / curvature);
         over_rows(solver, pool,
                   [&](int begin, int end) { update(job, begin, end, alpha_f, row_sums); });
-        const double next_r_z = sum_rows(row_sums.first, rows);
+        double next_r_z = sum_rows(row_sums.first, rows);
+        if (multilevel) next_r_z += solver.multilevel.apply(job, pool);
         r_r = sum_rows(row_sums.second, rows);
         beta = r_z > 0.0 ? next_r_z / r_z : 0.0;
         r_z = next_r_z;

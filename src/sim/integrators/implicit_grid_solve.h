@@ -18,6 +18,7 @@
 #include "parallel/worker_pool.h"
 #include "sim/cloth.h"
 #include "sim/implicit_grid_kernel.h"
+#include "sim/integrators/implicit_multilevel.h"
 
 namespace weft {
 
@@ -30,15 +31,17 @@ struct ForceField;
 // The error a stopped solve leaves in v1 is about the relative residual times the step's
 // own change, every step, so over a fixed time it does not shrink with h, while implicit
 // Euler's own error does (first order). A tolerance proportional to h keeps the solve's
-// share of the error about fixed at every h. At 0.6/s × h, 0.01 at a 60 Hz step, the solve's
-// error measured 1.7 %, 4.6 % and 8 % of the method's own on cloth_128.toml's material at
-// 32², 64² and 128² after 0.5 s (docs/accuracy.md).
+// share of the error about fixed at every h. At 1.2/s × h, 0.02 at a 60 Hz step, the solve's
+// error measured 8 % of the method's own on cloth_128.toml after 0.5 s (2.8 mm against
+// 35 mm RMS; 7 % at 0.01 for 19 % more iterations, 17 % at 0.04; docs/accuracy.md).
 struct ImplicitSolveSettings {
-    double tolerance_rate = 0.6;    // 1/s: stop at relative residual tolerance_rate × h ...
+    double tolerance_rate = 1.2;    // 1/s: stop at relative residual tolerance_rate × h ...
     double least_tolerance = 1e-6;  // ... but never ask for less (single precision's reach)
     double fixed_tolerance = 0.0;   // > 0: stop at this relative residual instead (studies)
     int max_iterations = 300;
     bool warm_start = true;  // start from v0 + the previous step's Δv instead of v0
+    bool multilevel = true;  // add the coarse levels to the block-Jacobi preconditioner
+    double coarse_weight = 1.0;
 
     double tolerance(double dt) const {
         return fixed_tolerance > 0.0 ? fixed_tolerance
@@ -57,6 +60,7 @@ struct ImplicitGridSolver {
     std::vector<Vec3> static_forces;  // N, f(x0, v = 0)
     std::vector<Vec3> zero_velocities;
     implicit_kernel::Job job;
+    ImplicitMultilevel multilevel;
     bool has_previous_change = false;  // guess_change holds a previous step's Δv
     // How the last solve went.
     int last_iterations = 0;

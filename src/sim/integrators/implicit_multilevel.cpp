@@ -1,0 +1,275 @@
+#include "sim/integrators/implicit_multilevel.h"
+
+#include <algorithm>
+
+namespace weft {
+namespace {
+
+// The four forward neighbour offsets of a coarse node, (row, col).
+constexpr int forward_rows[4] = {0, 1, 1, 1};
+constexpr int forward_cols[4] = {1, -1, 0, 1};
+
+// The forward slot of a coarse offset, or -1 for (0, -1), which belongs to the other node's
+// (0, 1) slot, and -2 for (0, 0).
+int slot_of(int row_step, int col_step) {
+    if (row_step == 0) return col_step == 1 ? 0 : col_step == -1 ? -1 : -2;
+    return col_step + 2;  // (1,-1) -> 1, (1,0) -> 2, (1,1) -> 3
+}
+
+void add_block(double* into, const double* block, double scale) {
+    for (int e = 0; e < 6; ++e) into[e] += scale * block[e];
+}
+
+// Adds the coupling block A_IJ (from I to J = I + (row_step, col_step), J != I) to the level.
+void add_coupling(ImplicitCoarseLevel& level, int i, int j, int row_step, int col_step,
+                  const double* block, double scale) {
+    const int slot = slot_of(row_step, col_step);
+    if (slot >= 0)
+        add_block(&level.neighbours[(static_cast<std::size_t>(i) * 4 + slot) * 6], block, scale);
+    else
+        add_block(&level.neighbours[(static_cast<std::size_t>(j) * 4 + 0) * 6], block, scale);
+}
+
+void invert_symmetric(const double* a, double* out) {
+    const double xx = a[0], yy = a[1], zz = a[2], xy = a[3], xz = a[4], yz = a[5];
+    const double c_xx = yy * zz - yz * yz;
+    const double c_xy = xz * yz - xy * zz;
+    const double c_xz = xy * yz - xz * yy;
+    const double determinant = xx * c_xx + xy * c_xy + xz * c_xz;
+    const double inverse = determinant > 0.0 ? 1.0 / determinant : 0.0;
+    out[0] = c_xx * inverse;
+    out[1] = (xx * zz - xz * xz) * inverse;
+    out[2] = (xx * yy - xy * xy) * inverse;
+    out[3] = c_xy * inverse;
+    out[4] = c_xz * inverse;
+    out[5] = (xy * xz - xx * yz) * inverse;
+}
+
+void multiply_block(const double* a, const double* v, double* out) {
+    out[0] = a[0] * v[0] + a[3] * v[1] + a[4] * v[2];
+    out[1] = a[3] * v[0] + a[1] * v[1] + a[5] * v[2];
+    out[2] = a[4] * v[0] + a[5] * v[1] + a[2] * v[2];
+}
+
+void size_level(ImplicitCoarseLevel& level, int rows, int cols) {
+    level.rows = rows;
+    level.cols = cols;
+    const auto nodes = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
+    level.diagonal.assign(6 * nodes, 0.0);
+    level.neighbours.assign(24 * nodes, 0.0);
+    level.inverse.assign(6 * nodes, 0.0);
+    level.residual.assign(3 * nodes, 0.0);
+    level.correction.assign(3 * nodes, 0.0);
+}
+
+// Runs pass(begin, end) over `rows`, split between the pool's threads when the fine grid has
+// enough particles to pay for the hand-off.
+template <class Pass>
+void over_rows(int rows, int fine_particles, WorkerPool* pool, Pass&& pass) {
+    if (pool && pool->thread_count() > 1 && fine_particles >= 4096)
+        pool->parallel_for(static_cast<std::size_t>(rows), [&](std::size_t begin, std::size_t end) {
+            pass(static_cast<int>(begin), static_cast<int>(end));
+        });
+    else
+        pass(0, rows);
+}
+
+int aggregate(int row, int col, int coarse_cols) {
+    return (row / 2) * coarse_cols + col / 2;
+}
+
+void invert_level(ImplicitCoarseLevel& level) {
+    const std::size_t nodes = level.diagonal.size() / 6;
+    for (std::size_t n = 0; n < nodes; ++n)
+        invert_symmetric(&level.diagonal[6 * n], &level.inverse[6 * n]);
+}
+
+// A fine spring's coupling block A_pq = -B, B = iso I + along u uᵀ, or false where the
+// spring is missing or an end is pinned (the filtered system has no coupling there).
+bool fine_coupling(const implicit_kernel::Job& job, const implicit_kernel::DirectionTerms& d, int r,
+                   int c, double coupling[6]) {
+    const int r2 = r + d.row_step, c2 = c + d.col_step;
+    if (r2 >= job.rows || c2 < 0 || c2 >= job.cols) return false;
+    const std::size_t i = job.pad + static_cast<std::size_t>(r) * job.cols + c;
+    const std::size_t j = job.pad + static_cast<std::size_t>(r2) * job.cols + c2;
+    if (job.free[i] == 0.0f || job.free[j] == 0.0f) return false;
+    const double iso = d.iso[i], along = d.along[i];
+    if (iso == 0.0 && along == 0.0) return false;
+    const double ux = d.ux[i], uy = d.uy[i], uz = d.uz[i];
+    coupling[0] = -(iso + along * ux * ux);
+    coupling[1] = -(iso + along * uy * uy);
+    coupling[2] = -(iso + along * uz * uz);
+    coupling[3] = -along * ux * uy;
+    coupling[4] = -along * ux * uz;
+    coupling[5] = -along * uy * uz;
+    return true;
+}
+
+// The first coarse level, from the fine stencil: A_c = Pᵀ F A F P over the free particles.
+// Each node gathers what is its own (so rows of nodes can be built on any thread, in the
+// same order): its particles' diagonal blocks, twice each spring inside it, the springs to
+// its forward neighbours, and for its (0, 1) neighbour also the springs that start there and
+// end in it.
+void build_from_fine(ImplicitCoarseLevel& level, const implicit_kernel::Job& job,
+                     WorkerPool* pool) {
+    size_level(level, (job.rows + 1) / 2, (job.cols + 1) / 2);
+    auto build_node = [&](int row, int col) {
+        const std::size_t node = static_cast<std::size_t>(row) * level.cols + col;
+        double* diagonal = &level.diagonal[6 * node];
+        double coupling[6];
+        for (int r = 2 * row; r < std::min(2 * row + 2, job.rows); ++r)
+            for (int c = 2 * col; c < std::min(2 * col + 2, job.cols); ++c) {
+                const std::size_t i = job.pad + static_cast<std::size_t>(r) * job.cols + c;
+                if (job.free[i] == 0.0f) continue;
+                for (int e = 0; e < 6; ++e) diagonal[e] += job.diagonal[e][i];
+                for (int k = 0; k < job.direction_count; ++k) {
+                    const implicit_kernel::DirectionTerms& d = job.directions[k];
+                    if (!fine_coupling(job, d, r, c, coupling)) continue;
+                    const int row_step = (r + d.row_step) / 2 - row;
+                    const int col_step = (c + d.col_step) / 2 - col;
+                    const int slot = slot_of(row_step, col_step);
+                    if (slot == -2)
+                        add_block(diagonal, coupling, 2.0);
+                    else if (slot >= 0)
+                        add_block(&level.neighbours[(node * 4 + slot) * 6], coupling, 1.0);
+                    // slot -1, (0, -1): the node to the left gathers it as its (0, 1) coupling.
+                }
+            }
+        // Springs from the (0, 1) neighbour that end here.
+        if (col + 1 < level.cols)
+            for (int r = 2 * row; r < std::min(2 * row + 2, job.rows); ++r)
+                for (int c = 2 * col + 2; c < std::min(2 * col + 4, job.cols); ++c)
+                    for (int k = 0; k < job.direction_count; ++k) {
+                        const implicit_kernel::DirectionTerms& d = job.directions[k];
+                        if ((r + d.row_step) / 2 != row || (c + d.col_step) / 2 != col) continue;
+                        if (fine_coupling(job, d, r, c, coupling))
+                            add_block(&level.neighbours[(node * 4 + 0) * 6], coupling, 1.0);
+                    }
+        invert_symmetric(diagonal, &level.inverse[6 * node]);
+    };
+    over_rows(level.rows, job.rows * job.cols, pool, [&](int begin, int end) {
+        for (int row = begin; row < end; ++row)
+            for (int col = 0; col < level.cols; ++col) build_node(row, col);
+    });
+}
+
+// The next coarse level from a coarse one, by the same aggregation.
+void build_from_coarse(ImplicitCoarseLevel& level, const ImplicitCoarseLevel& finer) {
+    size_level(level, (finer.rows + 1) / 2, (finer.cols + 1) / 2);
+    for (int r = 0; r < finer.rows; ++r) {
+        for (int c = 0; c < finer.cols; ++c) {
+            const std::size_t n = static_cast<std::size_t>(r) * finer.cols + c;
+            const int node = aggregate(r, c, level.cols);
+            add_block(&level.diagonal[6 * static_cast<std::size_t>(node)], &finer.diagonal[6 * n],
+                      1.0);
+            for (int slot = 0; slot < 4; ++slot) {
+                const int r2 = r + forward_rows[slot], c2 = c + forward_cols[slot];
+                if (r2 >= finer.rows || c2 < 0 || c2 >= finer.cols) continue;
+                const double* coupling = &finer.neighbours[(n * 4 + slot) * 6];
+                const int other = aggregate(r2, c2, level.cols);
+                if (other == node)
+                    add_block(&level.diagonal[6 * static_cast<std::size_t>(node)], coupling, 2.0);
+                else
+                    add_coupling(level, node, other, r2 / 2 - r / 2, c2 / 2 - c / 2, coupling, 1.0);
+            }
+        }
+    }
+    invert_level(level);
+}
+
+// The levels below `index` add their correction into this level's: restrict the residual,
+// correct there (recursively), prolong back.
+void add_coarser_corrections(std::vector<ImplicitCoarseLevel>& levels, std::size_t index,
+                             double weight);
+
+// correction = D⁻¹ residual at this level, plus the levels below it.
+void apply_level(std::vector<ImplicitCoarseLevel>& levels, std::size_t index, double weight) {
+    ImplicitCoarseLevel& level = levels[index];
+    const std::size_t nodes = level.diagonal.size() / 6;
+    for (std::size_t n = 0; n < nodes; ++n)
+        multiply_block(&level.inverse[6 * n], &level.residual[3 * n], &level.correction[3 * n]);
+    add_coarser_corrections(levels, index, weight);
+}
+
+void add_coarser_corrections(std::vector<ImplicitCoarseLevel>& levels, std::size_t index,
+                             double weight) {
+    if (index + 1 == levels.size()) return;
+    ImplicitCoarseLevel& level = levels[index];
+    ImplicitCoarseLevel& coarser = levels[index + 1];
+    std::fill(coarser.residual.begin(), coarser.residual.end(), 0.0);
+    for (int r = 0; r < level.rows; ++r)
+        for (int c = 0; c < level.cols; ++c) {
+            const std::size_t n = static_cast<std::size_t>(r) * level.cols + c;
+            const std::size_t m = static_cast<std::size_t>(aggregate(r, c, coarser.cols));
+            for (int a = 0; a < 3; ++a) coarser.residual[3 * m + a] += level.residual[3 * n + a];
+        }
+    apply_level(levels, index + 1, weight);
+    for (int r = 0; r < level.rows; ++r)
+        for (int c = 0; c < level.cols; ++c) {
+            const std::size_t n = static_cast<std::size_t>(r) * level.cols + c;
+            const std::size_t m = static_cast<std::size_t>(aggregate(r, c, coarser.cols));
+            for (int a = 0; a < 3; ++a)
+                level.correction[3 * n + a] += weight * coarser.correction[3 * m + a];
+        }
+}
+
+}  // namespace
+
+void ImplicitMultilevel::build(const implicit_kernel::Job& job, WorkerPool* pool) {
+    // Down to a level of at most 4 nodes a side.
+    std::size_t count = 0;
+    for (int rows = job.rows, cols = job.cols; rows > 4 || cols > 4;
+         rows = (rows + 1) / 2, cols = (cols + 1) / 2)
+        ++count;
+    levels.resize(count);
+    if (count == 0) return;
+    build_from_fine(levels[0], job, pool);
+    for (std::size_t l = 1; l < count; ++l) build_from_coarse(levels[l], levels[l - 1]);
+}
+
+double ImplicitMultilevel::apply(const implicit_kernel::Job& job, WorkerPool* pool) {
+    if (levels.empty()) return 0.0;
+    ImplicitCoarseLevel& first = levels[0];
+    // Pass 1, by rows of the first coarse level: its residual, the sum of its 2x2 fine
+    // residuals in a fixed order (pinned particles' are zero), and its own D⁻¹ correction.
+    over_rows(first.rows, job.rows * job.cols, pool, [&](int begin, int end) {
+        for (int row = begin; row < end; ++row)
+            for (int col = 0; col < first.cols; ++col) {
+                const std::size_t n = static_cast<std::size_t>(row) * first.cols + col;
+                double sum[3] = {0.0, 0.0, 0.0};
+                for (int r = 2 * row; r < std::min(2 * row + 2, job.rows); ++r)
+                    for (int c = 2 * col; c < std::min(2 * col + 2, job.cols); ++c) {
+                        const std::size_t i = job.pad + static_cast<std::size_t>(r) * job.cols + c;
+                        sum[0] += job.residual.x[i];
+                        sum[1] += job.residual.y[i];
+                        sum[2] += job.residual.z[i];
+                    }
+                for (int a = 0; a < 3; ++a) first.residual[3 * n + a] = sum[a];
+                multiply_block(&first.inverse[6 * n], sum, &first.correction[3 * n]);
+            }
+    });
+    // The coarser levels are small (a quarter of the first and less): one thread.
+    add_coarser_corrections(levels, 0, weight);
+    double added = 0.0;  // r · P x_c = (Pᵀ r) · x_c, in node order
+    for (std::size_t n = 0; n < first.residual.size(); ++n)
+        added += weight * first.residual[n] * first.correction[n];
+    // Pass 2, by fine rows: z += P x_c on the free particles.
+    over_rows(job.rows, job.rows * job.cols, pool, [&](int begin, int end) {
+        for (int r = begin; r < end; ++r) {
+            const double* correction =
+                &first.correction[3 * static_cast<std::size_t>(r / 2) * first.cols];
+            const std::size_t base = job.pad + static_cast<std::size_t>(r) * job.cols;
+            for (int c = 0; c < job.cols; ++c) {
+                const std::size_t i = base + c;
+                const std::size_t m = 3 * static_cast<std::size_t>(c / 2);
+                const float f = job.free[i];
+                job.preconditioned.x[i] += f * static_cast<float>(weight * correction[m]);
+                job.preconditioned.y[i] += f * static_cast<float>(weight * correction[m + 1]);
+                job.preconditioned.z[i] += f * static_cast<float>(weight * correction[m + 2]);
+            }
+        }
+    });
+    return added;
+}
+
+}  // namespace weft

@@ -1,0 +1,45 @@
+// The coarse levels of the structured implicit solve's preconditioner: an additive
+// multilevel (BPX-like) correction over 2x2 aggregates of particles.
+//
+// Block Jacobi alone sees one particle at a time, so conjugate gradient must carry
+// information across the sheet one spring per iteration: the long, smooth stretch modes of
+// a large stiff sheet take hundreds of iterations. Each coarse level here lumps 2x2 nodes of
+// the level below into one node (piecewise-constant aggregation) with the Galerkin operator
+// A_c = Pᵀ A P, which on a spring network is again a spring network of 3x3 blocks between
+// neighbouring aggregates (springs inside an aggregate drop out). The preconditioner is
+//   M⁻¹ r = D⁻¹ r + P (D_1⁻¹ + P (D_2⁻¹ + …) Pᵀ) Pᵀ r,
+// each level's block diagonal inverse on the residual restricted to it, summed back up:
+// no matrix products at all, so it costs a few passes over the particles. It is symmetric
+// and positive definite, as conjugate gradient needs.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "parallel/worker_pool.h"
+#include "sim/implicit_grid_kernel.h"
+
+namespace weft {
+
+struct ImplicitCoarseLevel {
+    int rows = 0, cols = 0;          // nodes: (rows, cols) of the level below, halved up
+    std::vector<double> diagonal;    // 6 per node: A_II, symmetric (xx yy zz xy xz yz)
+    std::vector<double> neighbours;  // 4 × 6 per node: A_IJ to (0,1) (1,-1) (1,0) (1,1)
+    std::vector<double> inverse;     // 6 per node: A_II⁻¹ (0 where singular: pinned)
+    std::vector<double> residual;    // 3 per node
+    std::vector<double> correction;  // 3 per node
+};
+
+struct ImplicitMultilevel {
+    std::vector<ImplicitCoarseLevel> levels;  // finest coarse level first
+    double weight = 1.0;                      // scale of each coarse correction
+
+    // Builds every coarse level from the fine system of `job` (its direction terms, the
+    // diagonal blocks and the free mask of the setup and residual passes).
+    void build(const implicit_kernel::Job& job, WorkerPool* pool);
+    // z += P (coarse correction of Pᵀ r) over the whole fine grid; returns r · (what it
+    // added to z), so the caller's r · z stays exact without another pass.
+    double apply(const implicit_kernel::Job& job, WorkerPool* pool);
+};
+
+}  // namespace weft

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <limits>
 
+#include "app/status_text.h"
 #include "csv_file.h"
 #include "plot.h"
 #include "sim/divergence.h"
@@ -152,7 +153,9 @@ int run_invariant_study(const InvariantOptions& options) {
                            std::to_string(r.torn), std::to_string(r.contacts_end),
                            cell(r.contacts_per_step), cell(per_simulated_second)});
             if (r.diverged) {
-                std::printf("diverged at t = %g s (%zu springs torn)\n", r.diverged_at, r.torn);
+                std::printf(
+                    "diverged at t = %g s (%s torn)\n", r.diverged_at,
+                    app::counted(static_cast<long long>(r.torn), "spring", "springs").c_str());
                 return;
             }
             std::printf(

@@ -9,8 +9,10 @@
 //   weft-bench replay SESSION.toml [--out DIR]
 //   weft-bench realtime [SCENE.toml] [--set K=V]... [--out DIR] [--sizes N,N,...]
 //                       [--duration SECONDS] [--max-run-seconds SECONDS]
+//   weft-bench --help | --version,  weft-bench STUDY --help
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -27,27 +29,82 @@
 
 namespace {
 
-// The usage text, on stderr after an error (status 2) or on stdout when asked for (status 0).
+// Each study's synopsis and what it measures: `weft-bench --help` prints every synopsis,
+// `weft-bench STUDY --help` one study's whole entry.
+struct StudyHelp {
+    const char* name;
+    const char* synopsis;
+    const char* description;
+};
+
+constexpr StudyHelp studies[] = {
+    {"precision",
+     "  weft-bench precision [SCENE.toml]... [--set K=V]... [--out DIR] [--repeats N]\n"
+     "                       [--duration SECONDS]\n",
+     "Work-precision diagrams: every integrator's error against an RK4 reference, against CPU\n"
+     "time per simulated second and against dt, with the fitted order (default scenes:\n"
+     "hanging_sheet and stiff_sheet). Scenes with tearing or contacts have no trajectory to\n"
+     "converge to and are measured by their invariants instead.\n"
+     "  --repeats N         timed runs per point, their median (1 to 1000, default 3)\n"
+     "  --duration SECONDS  simulated time of each invariant run (default 1)\n"},
+    {"invariants",
+     "  weft-bench invariants [SCENE.toml]... [--set K=V]... [--out DIR] [--repeats N]\n"
+     "                        [--duration SECONDS]\n",
+     "Energy change, largest strain, sag, springs torn and contacts per integrator and dt, for\n"
+     "scenes with tearing or contacts (default: tearing_sheet and sheet_on_sphere).\n"
+     "  --repeats N         timed runs per point, the least (1 to 1000, default 3)\n"
+     "  --duration SECONDS  simulated time of each run (default 1)\n"},
+    {"stability",
+     "  weft-bench stability [SCENE.toml] [--sweep grid|mass|stiffness]... [--set K=V]...\n"
+     "                       [--out DIR] [--duration SECONDS]\n",
+     "Each integrator's largest stable dt by bisection beside the linear prediction, swept over\n"
+     "grid size, particle mass and stiffness (default scene: hanging_sheet; all sweeps).\n"
+     "  --duration SECONDS  simulated time a step must survive (default 0.5)\n"},
+    {"throughput",
+     "  weft-bench throughput [SCENE.toml] [--set K=V]... [--out DIR] [--sizes N,N,...]\n",
+     "Step and draw times of sheets of each size against a plain implementation, and real\n"
+     "time at 60 frames per second (default scene: hanging_sheet).\n"
+     "  --sizes N,N,...     particles per side (3 to 4096, default 32,64,128,256)\n"},
+    {"replay", "  weft-bench replay SESSION.toml [--out DIR]\n",
+     "Replays a recorded session (weft --record) with every integrator in turn, as a hard case.\n"},
+    {"realtime",
+     "  weft-bench realtime [SCENE.toml] [--set K=V]... [--out DIR] [--sizes N,N,...]\n"
+     "                      [--duration SECONDS] [--max-run-seconds SECONDS]\n",
+     "Each method at the 60 fps frame budget: weft's symplectic and implicit Euler, XPBD with\n"
+     "substeps and a plain float step; cost per frame, error, stretch (default scene:\n"
+     "cloth_128.toml if there is one, else large_sheet.toml).\n"
+     "  --sizes N,N,...     particles per side (3 to 4096, default 32,64,128,256)\n"
+     "  --duration SECONDS  simulated time of each run (default 0.5)\n"
+     "  --max-run-seconds SECONDS  wall-clock cap of one method's run (default 30)\n"},
+};
+
+const char* const set_option =
+    "  --set K=V           override a scene key, checked like the file (weft --help)\n";
+const char* const out_option =
+    "  --out DIR           where the CSV files and plots go (default bench-out)\n";
+
+void print_synopses(std::FILE* out) {
+    std::fprintf(out, "usage:\n");
+    for (const StudyHelp& study : studies) std::fprintf(out, "%s", study.synopsis);
+    std::fprintf(out,
+                 "  weft-bench --help | --version\n"
+                 "  weft-bench STUDY --help\n");
+}
+
 int usage(const char* problem) {
     if (problem) std::fprintf(stderr, "error: %s\n", problem);
-    std::fprintf(
-        problem ? stderr : stdout,
-        "usage:\n"
-        "  weft-bench precision [SCENE.toml]... [--set K=V]... [--out DIR] [--repeats N]\n"
-        "                       [--duration SECONDS]\n"
-        "  weft-bench invariants [SCENE.toml]... [--set K=V]... [--out DIR] [--repeats N]\n"
-        "                        [--duration SECONDS]\n"
-        "  weft-bench stability [SCENE.toml] [--sweep grid|mass|stiffness]... [--set K=V]...\n"
-        "                       [--out DIR] [--duration SECONDS]\n"
-        "  weft-bench throughput [SCENE.toml] [--set K=V]... [--out DIR] [--sizes N,N,...]\n"
-        "  weft-bench replay SESSION.toml [--out DIR]\n"
-        "  weft-bench realtime [SCENE.toml] [--set K=V]... [--out DIR] [--sizes N,N,...]\n"
-        "                      [--duration SECONDS] [--max-run-seconds SECONDS]\n"
-        "    each method at the 60 fps frame budget: weft's symplectic and implicit Euler,\n"
-        "    XPBD with substeps and a plain float step; cost per frame, error, stretch\n"
-        "    (default scene: cloth_128.toml if there is one, else large_sheet.toml;\n"
-        "    sizes 32,64,128,256; duration 0.5 s; max-run-seconds 30)\n");
-    return problem ? 2 : 0;
+    print_synopses(stderr);
+    return 2;
+}
+
+const StudyHelp* find_study(const std::string& name) {
+    for (const StudyHelp& study : studies)
+        if (name == study.name) return &study;
+    return nullptr;
+}
+
+bool is_help(const std::string& arg) {
+    return arg == "--help" || arg == "-h";
 }
 
 }  // namespace
@@ -57,8 +114,28 @@ int main(int argc, char** argv) {
     if (args.empty())
         return usage(
             "which study? precision, invariants, stability, throughput, replay or realtime");
-    if (std::find(args.begin(), args.end(), "--help") != args.end()) return usage(nullptr);
+    if (is_help(args[0])) {
+        print_synopses(stdout);
+        std::printf(
+            "\nCSV files with a header line, and a PNG plot of each, go into --out.\n"
+            "`weft-bench STUDY --help` tells what a study measures.\n");
+        return 0;
+    }
+    if (args[0] == "--version") {
+        std::printf("weft-bench %s\n", WEFT_VERSION);
+        return 0;
+    }
     const std::string study = args[0];
+    const StudyHelp* help = find_study(study);
+    if (!help) return usage(("unknown study '" + study + "'").c_str());
+    // Asked for help, a study explains itself whatever else the line holds.
+    if (std::any_of(args.begin() + 1, args.end(), is_help)) {
+        std::printf("usage:\n%s\n%s", help->synopsis, help->description);
+        // replay replays the recorded parameters: it takes no --set.
+        if (std::strstr(help->synopsis, "--set")) std::printf("%s", set_option);
+        std::printf("%s", out_option);
+        return 0;
+    }
     std::vector<std::string> scenes, overrides, sweeps;
     std::string out_dir = "bench-out";
     int repeats = 3;
@@ -151,5 +228,5 @@ int main(int argc, char** argv) {
         if (!overrides.empty()) return usage("replay replays the recorded parameters: no --set");
         return weft::bench::run_replay_study({scenes[0], out_dir});
     }
-    return usage(("unknown study '" + study + "'").c_str());
+    return usage(("unknown study '" + study + "'").c_str());  // a study in the table, not run here
 }

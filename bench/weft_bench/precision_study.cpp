@@ -125,11 +125,14 @@ int run_trajectory_study(const PrecisionOptions& options) {
                 Trajectory run;
                 const double first =
                     seconds_of([&] { run = simulate(*scene, integrator, dt, sample_interval); });
+                // The run that recorded the trajectory is the first timing; --repeats 1 is
+                // that run alone, with no further runs to take a median of.
                 const double seconds =
-                    run.diverged ? first
-                                 : std::min(first, median_seconds(options.repeats - 1, [&] {
-                                                simulate(*scene, integrator, dt, sample_interval);
-                                            }));
+                    run.diverged || options.repeats < 2
+                        ? first
+                        : std::min(first, median_seconds(options.repeats - 1, [&] {
+                                       simulate(*scene, integrator, dt, sample_interval);
+                                   }));
                 const double per_simulated_second = seconds / (sample_count * sample_interval);
                 const Errors errors =
                     run.diverged ? Errors{NAN, NAN} : errors_between(run, reference);

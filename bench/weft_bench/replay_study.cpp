@@ -5,6 +5,7 @@
 
 #include "app/demo_state.h"
 #include "app/session_record.h"
+#include "app/status_text.h"
 #include "csv_file.h"
 #include "sim/divergence.h"
 #include "sim/energy.h"
@@ -41,10 +42,12 @@ int run_replay_study(const ReplayOptions& options) {
     }
     const SceneLoadResult recorded_scene = load_scene_text(record->scene_toml, "recorded scene");
     const Integrator recorded = recorded_scene.scene->solver.integrator;
-    std::printf("weft-bench replay on %s\n%s: %llu steps, %zu events, recorded with %s\n",
-                machine_description().c_str(), options.session_path.c_str(),
-                static_cast<unsigned long long>(record->steps), record->events.size(),
-                integrator_name(recorded));
+    std::printf(
+        "weft-bench replay on %s\n%s: %s, %s, recorded with %s\n", machine_description().c_str(),
+        options.session_path.c_str(),
+        app::counted(static_cast<long long>(record->steps), "step", "steps").c_str(),
+        app::counted(static_cast<long long>(record->events.size()), "event", "events").c_str(),
+        integrator_name(recorded));
     int status = 0;
     for (Integrator integrator : all_integrators) {
         if (stop_requested) break;
@@ -66,12 +69,13 @@ int run_replay_study(const ReplayOptions& options) {
             measure_energy(state.simulation.cloth(), state.simulation.force_field()).total();
         const double stretch = largest_stretch_ratio(state.simulation.cloth());
         std::printf(
-            "%s%d recoveries, ends at dt %.3g ms, energy %.4g J, largest stretch %.3f, "
+            "%s%s, ends at dt %.3g ms, energy %.4g J, largest stretch %.3f, "
             "%.3g s CPU\n",
             integrator == recorded ? (matches ? "(recorded: reproduced bit for bit) "
                                               : "(recorded: DIFFERS from the recording) ")
                                    : "",
-            state.recovery.recoveries, state.simulation.dt() * 1e3, energy, stretch, seconds);
+            app::counted(state.recovery.recoveries, "recovery", "recoveries").c_str(),
+            state.simulation.dt() * 1e3, energy, stretch, seconds);
         csv.write_row({integrator_name(integrator), integrator == recorded ? "yes" : "no",
                        integrator == recorded ? (matches ? "yes" : "no") : "",
                        std::to_string(state.recovery.recoveries), cell(state.simulation.dt()),

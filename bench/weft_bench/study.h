@@ -26,7 +26,8 @@ std::optional<Scene> load_study_scene(const std::string& path,
 bool run_steps(Simulation& simulation, long long steps);
 
 // Wall-clock seconds of a callable, and the median or the least of `repeats` timings (the
-// least is the one that other processes on a shared machine disturbed least).
+// least is the one that other processes on a shared machine disturbed least). Both time the
+// work at least once, whatever `repeats` says.
 double seconds_of(const std::function<void()>& work);
 double median_seconds(int repeats, const std::function<void()>& work);
 double min_seconds(int repeats, const std::function<void()>& work);

@@ -39,6 +39,8 @@ std::variant<CommandLine, CommandLineError> parse_command_line(
         };
         if (arg == "--help" || arg == "-h") {
             line.help = true;
+        } else if (arg == "--version") {
+            line.version = true;
         } else if (arg == "--headless") {
             line.headless = true;
         } else if (is_option("--set")) {
@@ -110,7 +112,7 @@ std::variant<CommandLine, CommandLineError> parse_command_line(
             line.scene_path = arg;
         }
     }
-    if (line.help) return line;
+    if (line.help || line.version) return line;
     if (line.replay_path) {
         // A recording carries its scene and its length.
         if (line.scene_path)
@@ -149,6 +151,7 @@ const char* usage_text() {
            "  weft --headless SCENE.toml --steps N [--set KEY=VALUE]... [--dump STATE.csv]\n"
            "       [--screenshot IMAGE.png [--size WxH]]\n"
            "  weft --headless --replay SESSION.toml [--dump STATE.csv] [--screenshot IMAGE.png]\n"
+           "  weft --help | --version\n"
            "\n"
            "  --set KEY=VALUE   override a scene key by its dotted path, e.g. solver.dt=0.0005\n"
            "  --steps N         run exactly N steps of the scene's dt (headless)\n"

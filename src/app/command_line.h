@@ -4,6 +4,7 @@
 //   weft --headless SCENE.toml --steps N [--set KEY=VALUE]... [--dump STATE.csv]
 //        [--screenshot IMAGE.png [--size WxH]]
 //   weft --headless --replay SESSION.toml [--dump STATE.csv] [--screenshot IMAGE.png]
+//   weft --help | --version
 #pragma once
 
 #include <cstdint>
@@ -17,6 +18,7 @@ namespace weft {
 struct CommandLine {
     bool headless = false;
     bool help = false;
+    bool version = false;  // --version: print the version and stop
     std::optional<std::string> scene_path;  // absent: the default scene
     std::vector<std::string> overrides;     // "KEY=VALUE", in order
     std::optional<std::uint64_t> steps;     // --steps N

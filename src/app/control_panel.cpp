@@ -13,6 +13,7 @@
 #include "app/atomic_file.h"
 #include "app/screenshot_names.h"
 #include "app/session_record.h"
+#include "app/status_text.h"
 #include "sim/energy.h"
 #include "sim/stability_limit.h"
 
@@ -91,8 +92,13 @@ void statistics(DemoState& state) {
                 s.sim_seconds * 1e3, s.raster_seconds * 1e3);
     ImGui::Text("%d steps/frame   t = %.2f s%s", s.steps, state.simulation.time(),
                 state.paused ? "   (paused)" : "");
-    ImGui::Text("%zu particles, %zu springs, %d threads", cloth.particle_count(),
-                cloth.spring_count(), state.simulation.thread_count());
+    ImGui::Text(
+        "%s, %s, %s",
+        counted(static_cast<long long>(cloth.particle_count()), "particle", "particles").c_str(),
+        counted(static_cast<long long>(cloth.spring_count()), "spring", "springs").c_str(),
+        counted(state.simulation.thread_count(), "thread", "threads").c_str());
+    // Implicit Euler's cost and accuracy per step hang on its conjugate-gradient solve.
+    if (auto solve = linear_solve_text(state.simulation)) ImGui::TextUnformatted(solve->c_str());
     if (!s.energy.empty()) {
         ImGui::Text("energy %.4g J", s.energy.back());
         ImGui::PlotLines("##energy", s.energy.data(), static_cast<int>(s.energy.size()), 0, nullptr,
@@ -101,8 +107,8 @@ void statistics(DemoState& state) {
     state.cloth_view.spring_colours(cloth);  // measures the largest strain
     ImGui::Text("largest stretch %.1f %%", 100.0 * state.cloth_view.largest_strain());
     if (state.recovery.recoveries > 0)
-        ImGui::TextColored(ImVec4(1, 0.6f, 0.2f, 1), "recovered from divergence %d times",
-                           state.recovery.recoveries);
+        ImGui::TextColored(ImVec4(1, 0.6f, 0.2f, 1), "recovered from divergence %s",
+                           counted(state.recovery.recoveries, "time", "times").c_str());
 }
 
 const char* const integrator_names[] = {
@@ -318,9 +324,11 @@ void session(DemoState& state) {
         return;
     }
     if (state.recording) {
-        ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "recording: %zu events, %llu steps",
-                           state.recording->events.size(),
-                           static_cast<unsigned long long>(state.steps_run));
+        ImGui::TextColored(
+            ImVec4(1, 0.4f, 0.4f, 1), "recording: %s, %s",
+            counted(static_cast<long long>(state.recording->events.size()), "event", "events")
+                .c_str(),
+            counted(static_cast<long long>(state.steps_run), "step", "steps").c_str());
         if (ImGui::Button("stop and save (F5)")) {
             const SessionRecord record = state.stop_recording();
             const std::string path = next_free_path(".", "weft-session", "toml");

@@ -21,6 +21,7 @@
 #include "app/session_record.h"
 #include "app/side_by_side.h"
 #include "app/state_dump.h"
+#include "app/status_text.h"
 #include "raster/png_writer.h"
 #include "sim/energy.h"
 
@@ -291,7 +292,9 @@ void draw_run_labels(const DemoState& state, const Window& w) {
         ImGui::Text("energy %.5g J   t = %.2f s",
                     measure_energy(simulation.cloth(), simulation.force_field()).total(),
                     simulation.time());
-        if (recoveries > 0) ImGui::Text("recovered %d times", recoveries);
+        if (auto solve = linear_solve_text(simulation)) ImGui::TextUnformatted(solve->c_str());
+        if (recoveries > 0)
+            ImGui::Text("recovered %s", counted(recoveries, "time", "times").c_str());
         ImGui::End();
     }
 }

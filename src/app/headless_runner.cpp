@@ -10,6 +10,7 @@
 #include "app/demo_state.h"
 #include "app/session_record.h"
 #include "app/state_dump.h"
+#include "app/status_text.h"
 #include "raster/png_writer.h"
 #include "sim/energy.h"
 #include "sim/scene_loader.h"
@@ -129,10 +130,12 @@ int run_headless_replay(const CommandLine& command_line) {
     state.start_replay(*record);
     while (!state.replay_finished()) state.step(4096);
     const bool matches = state.replay_matches();
-    std::printf("replayed %llu steps and %zu events of %s: final state hash %016llx %s\n",
-                static_cast<unsigned long long>(state.steps_run), record->events.size(),
-                path.c_str(), static_cast<unsigned long long>(hash_state(state.simulation.cloth())),
-                matches ? "matches the recording" : "DIFFERS from the recording");
+    std::printf(
+        "replayed %s and %s of %s: final state hash %016llx %s\n",
+        app::counted(static_cast<long long>(state.steps_run), "step", "steps").c_str(),
+        app::counted(static_cast<long long>(record->events.size()), "event", "events").c_str(),
+        path.c_str(), static_cast<unsigned long long>(hash_state(state.simulation.cloth())),
+        matches ? "matches the recording" : "DIFFERS from the recording");
     if (!write_outputs(command_line, dump, state.simulation)) return exit_bad_input;
     return matches ? exit_ok : exit_replay_differs;
 }

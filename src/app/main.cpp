@@ -21,6 +21,10 @@ int main(int argc, char** argv) {
         std::printf("%s", weft::usage_text());
         return weft::exit_ok;
     }
+    if (command_line.version) {
+        std::printf("weft %s\n", WEFT_VERSION);
+        return weft::exit_ok;
+    }
     try {
         if (command_line.headless && command_line.replay_path)
             return weft::run_headless_replay(command_line);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -254,6 +255,12 @@ std::optional<SessionRecord> session_from_toml(std::string_view text, const std:
 }
 
 std::optional<SessionRecord> read_session_file(const std::string& path, std::string& error) {
+    // A directory opens as a stream that reads as empty: name the real mistake instead.
+    std::error_code ignored;
+    if (std::filesystem::is_directory(path, ignored)) {
+        error = path + ": is a directory, not a session file";
+        return std::nullopt;
+    }
     std::ifstream file(path, std::ios::binary);
     if (!file) {
         error = path + ": cannot read file: " + std::strerror(errno);

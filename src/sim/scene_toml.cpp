@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -336,6 +337,14 @@ SceneLoadResult load_scene_text(std::string_view toml_text, std::string_view sou
 
 SceneLoadResult load_scene_file(const std::string& path,
                                 const std::vector<std::string>& overrides) {
+    // On Linux a directory opens as a stream that reads as empty, and an empty scene is the
+    // default sheet: without this check `weft assets/scenes` would run that sheet silently.
+    std::error_code ignored;
+    if (std::filesystem::is_directory(path, ignored)) {
+        SceneLoadResult result;
+        result.error = SceneError{path, "is a directory, not a scene file"};
+        return result;
+    }
     std::ifstream file(path, std::ios::binary);
     if (!file) {
         SceneLoadResult result;

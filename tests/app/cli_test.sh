@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # End-to-end tests of the weft command line: exit statuses, messages on stderr and the dump
-# format, as the design notes fix them. Usage: cli_test.sh WEFT_BINARY SOURCE_DIR
+# format, as the design notes fix them. Usage: cli_test.sh WEFT_BINARY SOURCE_DIR VERSION
+# (VERSION: the CMake project version, which --version must print).
 set -uo pipefail
 weft=$1
 scenes=$2/assets/scenes
+version=$3
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
@@ -47,11 +49,23 @@ expect 2 '^error: --set' -- --headless "$scenes/hanging_sheet.toml" --steps 1 --
 expect 2 '^error: --set cloth.(rows|cols): .*4194304' -- --headless "$scenes/hanging_sheet.toml" --steps 1 \
   --set cloth.rows=100000 --set cloth.cols=100000
 expect 2 "^error: $work/missing.toml: " -- --headless "$work/missing.toml" --steps 1
+# A directory reads as an empty file, which is the default scene: it must be refused, by the
+# headless run, a replay, and the window before it opens one (no video driver here: a window
+# that tried would fail with another message).
+expect 2 "^error: $scenes: is a directory, not a scene file$" -- --headless "$scenes" --steps 10
+expect 2 "^error: $scenes: is a directory, not a session file$" -- --headless --replay "$scenes"
+program=env
+expect 2 "^error: $scenes: is a directory, not a scene file$" -- -u DISPLAY -u WAYLAND_DISPLAY \
+  SDL_VIDEODRIVER=no-such-driver "$weft" "$scenes"
+program=$weft
 expect 2 '^error: --steps: ' -- --headless "$scenes/hanging_sheet.toml" --steps many
 expect 2 '^error: --headless: needs --steps' -- --headless "$scenes/hanging_sheet.toml"
 expect 2 '^error: --frobnicate: unknown option' -- --frobnicate
 expect 2 "^error: $work/nowhere/x.csv: cannot write" -- --headless "$scenes/hanging_sheet.toml" --steps 1 --dump "$work/nowhere/x.csv"
 expect 0 quiet -- --help
+check "--help prints the usage on stdout" grep -q '^  weft --help | --version$' "$work/out"
+expect 0 quiet -- --version
+check "--version prints the project version" test "$(cat "$work/out")" = "weft $version"
 
 # Replaying a recording headless (the window records; here a recording is written by hand):
 # status 0 when the state ends as recorded, 4 when it does not, 2 for a bad recording.
@@ -68,6 +82,8 @@ check "the pins were released at step 100" awk -F, 'NR == 2 && $4 == 0.6 { exit 
 write_session "$work/session.toml" "0x$actual_hash"
 expect 0 quiet -- --headless --replay "$work/session.toml"
 check "a matching replay says so" grep -q "matches the recording" "$work/out"
+# Counts in the words' right number: this recording has one event.
+check "a replay counts its one event in the singular" grep -q "^replayed 300 steps and 1 event of " "$work/out"
 printf 'format = 1\nsteps = 10\nfinal_state_hash = "0x00"\nscene = ""\n' >"$work/bad_session.toml"
 expect 2 "^error: $work/bad_session.toml:3:" -- --headless --replay "$work/bad_session.toml"
 expect 2 "^error: $work/none.toml: cannot read" -- --headless --replay "$work/none.toml"

@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # weft-bench's command line: bad numbers are refused with status 2 and `error: --OPTION: ...`
-# (never silently replaced), and tiny invariant and realtime studies write the documented CSV
-# and plots.
-# Usage: weft_bench_cli_test.sh WEFT_BENCH_BINARY SOURCE_DIR
+# (never silently replaced), tiny invariant and realtime studies write the documented CSV and
+# plots, and every study answers --help.
+# Usage: weft_bench_cli_test.sh WEFT_BENCH_BINARY SOURCE_DIR VERSION
+# (VERSION: the CMake project version, which --version must print).
 set -uo pipefail
 bench=$1
 scenes=$2/assets/scenes
+version=$3
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
@@ -13,6 +15,21 @@ passes=0
 
 program=$bench
 source "$(dirname "$0")/../cli_expect.sh"
+
+# Help and version, as the design's command line promises: usage on stdout, status 0.
+expect 0 quiet -- --help
+for study in precision invariants stability throughput replay realtime; do
+  check "--help names $study" grep -q "^  weft-bench $study " "$work/out"
+done
+expect 0 quiet -- --version
+check "--version prints the project version" test "$(cat "$work/out")" = "weft-bench $version"
+for study in precision invariants stability throughput replay realtime; do
+  # Help wins over everything else on the line, even a value that would be refused.
+  expect 0 quiet -- $study --help --out "$work/x"
+  check "$study --help starts with its usage" test "$(sed -n 2p "$work/out" | awk '{ print $1, $2 }')" = "weft-bench $study"
+  expect 0 quiet -- $study --repeats 0 -h
+done
+expect 2 "^error: unknown study 'precisoin'" -- precisoin --help
 
 # Strict numbers: the whole text, in range, or status 2 before anything runs.
 for study in precision invariants; do
@@ -28,6 +45,8 @@ done
 expect 2 "^error: --duration: '1e999' must be" -- stability --duration 1e999 --out "$work/x"
 expect 2 "^error: unknown study 'precisoin'" -- precisoin
 expect 2 "^error: unknown or incomplete option --repeats" -- invariants --repeats
+# A directory is not a scene (it would read as the default one).
+expect 2 "^error: $scenes: is a directory, not a scene file$" -- stability "$scenes" --out "$work/x"
 check "nothing was written for refused input" test ! -e "$work/x"
 
 # A tiny invariant study: 4x4 tearing sheet, 8 ms per run. One reference row, then six
@@ -48,6 +67,16 @@ expect 0 quiet -- precision "$scenes/sheet_on_sphere.toml" --set cloth.rows=3 --
   --duration 0.004 --repeats 1 --out "$work/prec"
 check "contact scene measured by invariants" test -s "$work/prec/invariants_sheet_on_sphere.csv"
 check "no trajectory errors for it" test ! -e "$work/prec/precision.csv"
+
+# --repeats 1 is one timed run per point (issue 18: it used to take the median of no runs and
+# crash). A 2x2 default sheet: six integrators x six steps, each with a measured time.
+expect 0 quiet -- precision "$scenes/hanging_sheet.toml" --set cloth.rows=2 --set cloth.cols=2 \
+  --repeats 1 --out "$work/prec1"
+csv=$work/prec1/precision.csv
+check "precision --repeats 1: 36 rows" test "$(tail -n +2 "$csv" | wc -l)" -eq 36
+check "precision --repeats 1: every time is a number > 0" \
+  awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "seconds_per_simulated_second") c = i }
+           NR > 1 && !($c + 0 > 0) { exit 1 } END { if (!c) exit 1 }' "$csv"
 
 # replay: a drag recorded in the window (assets/sessions/fling.toml), replayed by every
 # integrator; the recorded one must end in the recorded state bit for bit.

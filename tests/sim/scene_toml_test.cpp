@@ -228,6 +228,16 @@ TEST(SceneLoader, MissingFileIsAnError) {
     EXPECT_TRUE(contains(result.error->what, "cannot read file"));
 }
 
+// A directory opens as a stream that reads as nothing, and nothing is the default scene: it
+// must be refused, not run as the default sheet.
+TEST(SceneLoader, ADirectoryIsNotASceneFile) {
+    const std::string folder = std::string(WEFT_SOURCE_DIR) + "/assets/scenes";
+    SceneLoadResult result = load_scene_file(folder);
+    ASSERT_FALSE(result.ok());
+    EXPECT_EQ(result.error->where, folder);
+    EXPECT_EQ(result.error->what, "is a directory, not a scene file");
+}
+
 TEST(SceneOverrides, ChangeValuesLikeTheFileWould) {
     SceneLoadResult result = load("[solver]\ndt = 0.001\n",
                                   {"solver.dt=0.0005", "cloth.rows=40", "solver.integrator=rk4",

@@ -1,0 +1,49 @@
+// The wording of the demo's and the command line's status lines. Truths: English number
+// agreement, and printf's own "%.1e" rounding to two significant digits written out by hand.
+#include <gtest/gtest.h>
+
+#include "app/status_text.h"
+#include "sim/scene.h"
+
+namespace weft::app {
+namespace {
+
+TEST(StatusText, CountsTakeTheSingularOnlyForExactlyOne) {
+    EXPECT_EQ(counted(1, "time", "times"), "1 time");
+    EXPECT_EQ(counted(0, "time", "times"), "0 times");
+    EXPECT_EQ(counted(2, "recovery", "recoveries"), "2 recoveries");
+    EXPECT_EQ(counted(1, "recovery", "recoveries"), "1 recovery");
+    EXPECT_EQ(counted(11, "event", "events"), "11 events");
+}
+
+TEST(StatusText, LinearSolveShowsIterationsAndTheResidualToTwoDigits) {
+    EXPECT_EQ(linear_solve_text({23, 4.1e-3}), "solve: 23 iterations, residual 4.1e-03");
+    EXPECT_EQ(linear_solve_text({1, 0.0123456}), "solve: 1 iteration, residual 1.2e-02");
+    EXPECT_EQ(linear_solve_text({500, 9.96e-9}), "solve: 500 iterations, residual 1.0e-08");
+    EXPECT_EQ(linear_solve_text({0, 0.0}), "solve: 0 iterations, residual 0.0e+00");
+}
+
+Scene small_sheet(Integrator integrator) {
+    Scene scene;
+    scene.cloth.rows = 4;
+    scene.cloth.cols = 4;
+    scene.solver = {integrator, 0.001};
+    return scene;
+}
+
+TEST(StatusText, OnlyImplicitEulerHasALinearSolveToShow) {
+    Simulation explicit_run(small_sheet(Integrator::symplectic_euler));
+    explicit_run.step();
+    EXPECT_FALSE(linear_solve_text(explicit_run).has_value());
+
+    Simulation implicit_run(small_sheet(Integrator::implicit_euler));
+    EXPECT_EQ(linear_solve_text(implicit_run), "solve: none yet");
+    implicit_run.step();
+    // Gravity pulls a sheet released at rest, so the first step has a system to solve.
+    const Simulation::LinearSolve solve = implicit_run.last_linear_solve();
+    EXPECT_GE(solve.iterations, 1);
+    EXPECT_EQ(linear_solve_text(implicit_run), linear_solve_text(solve));
+}
+
+}  // namespace
+}  // namespace weft::app

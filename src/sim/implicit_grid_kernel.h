@@ -61,6 +61,14 @@ struct Job {
     // xx yy zz xy xz yz.
     float* inverse_diagonal[6] = {};
 
+    // The first coarse level of the preconditioner (integrators/implicit_multilevel.h), when
+    // attached: the passes that finish a pair of rows' residual sum it into the pair's coarse
+    // nodes (3 doubles each) and multiply by the nodes' inverse diagonal blocks.
+    int coarse_cols = 0;                     // 0: not attached
+    double* coarse_residual = nullptr;       // 3 per node
+    double* coarse_correction = nullptr;     // 3 per node
+    const double* coarse_inverse = nullptr;  // 6 per node
+
     Field3 rhs;             // b = M v0 + h f(x0, 0)
     Field3 start;           // v0
     Field3 guess_change;    // the previous step's v1 - v0 (the warm start), kept between steps
@@ -87,6 +95,9 @@ void setup_rows_baseline(const Job& job, int begin, int end, double warm_start);
 void setup_rows_avx2(const Job& job, int begin, int end, double warm_start);
 void setup_rows_avx512(const Job& job, int begin, int end, double warm_start);
 
+// The row passes are handed whole pairs of rows (begin even), so that the passes that
+// finish the residual can sum each pair into the first coarse level.
+//
 // Pass 2: the preconditioner; r = b - A v1, z = P r; sums r·z, r·r, and |b - A v0|² (the
 // scale of the residual: the right-hand side of the Δv form, h (f0 + h K v0)).
 void residual_rows_baseline(const Job& job, int begin, int end, RowSums sums);

@@ -250,6 +250,48 @@ void subtract_from_rhs_row(const Job& job, int row) {
     }
 }
 
+// The pair of rows starting at `row` (even) summed into their coarse nodes, in a fixed order
+// (row, then row + 1; column 2C, then 2C + 1), and each node's own correction D_c⁻¹ r_c.
+void restrict_row_pair(const Job& job, int row) {
+    const std::size_t first = at(job, row);
+    const bool second_row = row + 1 < job.rows;
+    const std::size_t second = second_row ? at(job, row + 1) : first;
+    const float weight_second = second_row ? 1.0f : 0.0f;
+    const float* components[3][2] = {{job.residual.x + first, job.residual.x + second},
+                                     {job.residual.y + first, job.residual.y + second},
+                                     {job.residual.z + first, job.residual.z + second}};
+    const int cols = job.cols;
+    for (int col = 0; 2 * col < cols; ++col) {
+        const std::size_t node =
+            static_cast<std::size_t>(row / 2) * static_cast<std::size_t>(job.coarse_cols) +
+            static_cast<std::size_t>(col);
+        const int c = 2 * col;
+        const bool second_col = c + 1 < cols;
+        double sum[3];
+        for (int a = 0; a < 3; ++a) {
+            const float* upper = components[a][0];
+            const float* lower = components[a][1];
+            double s = static_cast<double>(upper[c]);
+            if (second_col) s += static_cast<double>(upper[c + 1]);
+            s += static_cast<double>(weight_second * lower[c]);
+            if (second_col) s += static_cast<double>(weight_second * lower[c + 1]);
+            sum[a] = s;
+            job.coarse_residual[3 * node + a] = s;
+        }
+        const double* inverse = job.coarse_inverse + 6 * node;
+        double* out = job.coarse_correction + 3 * node;
+        out[0] = inverse[0] * sum[0] + inverse[3] * sum[1] + inverse[4] * sum[2];
+        out[1] = inverse[3] * sum[0] + inverse[1] * sum[1] + inverse[5] * sum[2];
+        out[2] = inverse[4] * sum[0] + inverse[5] * sum[1] + inverse[2] * sum[2];
+    }
+}
+
+// After row `row`'s residual is final: the pair it ends, if it ends one.
+void restrict_if_pair_done(const Job& job, int row) {
+    if (job.coarse_cols > 0 && (row % 2 == 1 || row + 1 == job.rows))
+        restrict_row_pair(job, row - row % 2);
+}
+
 void residual_rows(const Job& job, int begin, int end, RowSums sums) {
     for (int row = begin; row < end; ++row) {
         diagonal_row(job, row);
@@ -263,13 +305,8 @@ void residual_rows(const Job& job, int begin, int end, RowSums sums) {
         precondition_row(job, row);
         sums.first[row] = row_dot(job.residual, job.preconditioned, base, job.cols);
         sums.second[row] = row_dot(job.residual, job.residual, base, job.cols);
+        restrict_if_pair_done(job, row);
     }
-}
-
-// out = a + s b over n floats.
-void add_scaled(float* __restrict out, const float* __restrict a, float s,
-                const float* __restrict b, int n) {
-    for (int c = 0; c < n; ++c) out[c] = a[c] + s * b[c];
 }
 
 // out += s b over n floats.
@@ -312,5 +349,6 @@ void update_rows(const Job& job, int begin, int end, float alpha, RowSums sums) 
         precondition_row(job, row);
         sums.first[row] = row_dot(job.residual, job.preconditioned, base, job.cols);
         sums.second[row] = row_dot(job.residual, job.residual, base, job.cols);
+        restrict_if_pair_done(job, row);
     }
 }

@@ -24,16 +24,17 @@ Function* kernel_of(Function* baseline, Function* avx2, Function* avx512) {
     return level == SimdLevel::avx512 ? avx512 : level == SimdLevel::avx2 ? avx2 : baseline;
 }
 
-// Runs pass(begin, end) over the rows, split between the pool's threads when worth it.
+// Runs pass(begin, end) over the rows, split between the pool's threads when worth it, in
+// whole pairs of rows: the update pass sums each pair into the first coarse level.
 template <class Pass>
 void over_rows(const ImplicitGridSolver& solver, WorkerPool* pool, Pass&& pass) {
     const auto count =
         static_cast<std::size_t>(solver.rows) * static_cast<std::size_t>(solver.cols);
     if (pool && pool->thread_count() > 1 && count >= min_particles_for_threads)
-        pool->parallel_for(static_cast<std::size_t>(solver.rows),
-                           [&](std::size_t begin, std::size_t end) {
-                               pass(static_cast<int>(begin), static_cast<int>(end));
-                           });
+        pool->parallel_for(static_cast<std::size_t>((solver.rows + 1) / 2), [&](std::size_t begin,
+                                                                                std::size_t end) {
+            pass(static_cast<int>(2 * begin), std::min(static_cast<int>(2 * end), solver.rows));
+        });
     else
         pass(0, solver.rows);
 }
@@ -221,6 +222,7 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     const int rows = solver.rows;
     double* sums = solver.row_sums.data();
     const implicit_kernel::RowSums row_sums{sums, sums + rows, sums + 2 * rows};
+    ImplicitMultilevel::detach(job);
     const auto residual =
         kernel_of(implicit_kernel::residual_rows_baseline, implicit_kernel::residual_rows_avx2,
                   implicit_kernel::residual_rows_avx512);
@@ -229,9 +231,12 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     double r_r = sum_rows(row_sums.second, rows);
     const bool multilevel = settings.multilevel;
     if (multilevel) {
+        // The coarse levels need the fine diagonal blocks of the pass just run; from here
+        // on the update passes restrict their residual into the first level on the way.
         solver.multilevel.weight = settings.coarse_weight;
         solver.multilevel.build(job, pool);
-        r_z += solver.multilevel.apply(job, pool);
+        r_z += solver.multilevel.apply(job, false, pool);
+        solver.multilevel.attach(job);
     }
     const double scale = std::sqrt(sum_rows(row_sums.third, rows));
     const double target = settings.tolerance(dt) * scale;
@@ -259,7 +264,7 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
         over_rows(solver, pool,
                   [&](int begin, int end) { update(job, begin, end, alpha_f, row_sums); });
         double next_r_z = sum_rows(row_sums.first, rows);
-        if (multilevel) next_r_z += solver.multilevel.apply(job, pool);
+        if (multilevel) next_r_z += solver.multilevel.apply(job, true, pool);
         r_r = sum_rows(row_sums.second, rows);
         beta = r_z > 0.0 ? next_r_z / r_z : 0.0;
         r_z = next_r_z;

@@ -233,27 +233,40 @@ void ImplicitMultilevel::build(const implicit_kernel::Job& job, WorkerPool* pool
     for (std::size_t l = 1; l < count; ++l) build_from_coarse(levels[l], levels[l - 1]);
 }
 
-double ImplicitMultilevel::apply(const implicit_kernel::Job& job, WorkerPool* pool) {
+void ImplicitMultilevel::attach(implicit_kernel::Job& job) {
+    if (levels.empty()) return detach(job);
+    ImplicitCoarseLevel& first = levels[0];
+    job.coarse_cols = first.cols;
+    job.coarse_residual = first.residual.data();
+    job.coarse_correction = first.correction.data();
+    job.coarse_inverse = first.inverse.data();
+}
+
+double ImplicitMultilevel::apply(const implicit_kernel::Job& job, bool restricted,
+                                 WorkerPool* pool) {
     if (levels.empty()) return 0.0;
     ImplicitCoarseLevel& first = levels[0];
     // Pass 1, by rows of the first coarse level: its residual, the sum of its 2x2 fine
-    // residuals in a fixed order (pinned particles' are zero), and its own D⁻¹ correction.
-    over_rows(first.rows, job.rows * job.cols, pool, [&](int begin, int end) {
-        for (int row = begin; row < end; ++row)
-            for (int col = 0; col < first.cols; ++col) {
-                const std::size_t n = static_cast<std::size_t>(row) * first.cols + col;
-                double sum[3] = {0.0, 0.0, 0.0};
-                for (int r = 2 * row; r < std::min(2 * row + 2, job.rows); ++r)
-                    for (int c = 2 * col; c < std::min(2 * col + 2, job.cols); ++c) {
-                        const std::size_t i = job.pad + static_cast<std::size_t>(r) * job.cols + c;
-                        sum[0] += job.residual.x[i];
-                        sum[1] += job.residual.y[i];
-                        sum[2] += job.residual.z[i];
-                    }
-                for (int a = 0; a < 3; ++a) first.residual[3 * n + a] = sum[a];
-                multiply_block(&first.inverse[6 * n], sum, &first.correction[3 * n]);
-            }
-    });
+    // residuals in a fixed order (pinned particles' are zero), and its own D⁻¹ correction;
+    // unless the update pass has done it on the way (implicit_grid_kernel.h).
+    if (!restricted)
+        over_rows(first.rows, job.rows * job.cols, pool, [&](int begin, int end) {
+            for (int row = begin; row < end; ++row)
+                for (int col = 0; col < first.cols; ++col) {
+                    const std::size_t n = static_cast<std::size_t>(row) * first.cols + col;
+                    double sum[3] = {0.0, 0.0, 0.0};
+                    for (int r = 2 * row; r < std::min(2 * row + 2, job.rows); ++r)
+                        for (int c = 2 * col; c < std::min(2 * col + 2, job.cols); ++c) {
+                            const std::size_t i =
+                                job.pad + static_cast<std::size_t>(r) * job.cols + c;
+                            sum[0] += static_cast<double>(job.residual.x[i]);
+                            sum[1] += static_cast<double>(job.residual.y[i]);
+                            sum[2] += static_cast<double>(job.residual.z[i]);
+                        }
+                    for (int a = 0; a < 3; ++a) first.residual[3 * n + a] = sum[a];
+                    multiply_block(&first.inverse[6 * n], sum, &first.correction[3 * n]);
+                }
+        });
     // The coarser levels are small (a quarter of the first and less): one thread.
     add_coarser_corrections(levels, 0, weight);
     double added = 0.0;  // r · P x_c = (Pᵀ r) · x_c, in node order

@@ -39,8 +39,13 @@ struct ImplicitMultilevel {
     // diagonal blocks and the free mask of the setup and residual passes).
     void build(const implicit_kernel::Job& job, WorkerPool* pool);
     // z += P (coarse correction of Pᵀ r) over the whole fine grid; returns r · (what it
-    // added to z), so the caller's r · z stays exact without another pass.
-    double apply(const implicit_kernel::Job& job, WorkerPool* pool);
+    // added to z), so the caller's r · z stays exact without another pass. `restricted`:
+    // the fine passes have already summed r into the first level (attach() below).
+    double apply(const implicit_kernel::Job& job, bool restricted, WorkerPool* pool);
+    // Points the job's coarse fields at the first level, so the update passes restrict on
+    // the way; detach() before a pass whose residual must not be restricted.
+    void attach(implicit_kernel::Job& job);
+    static void detach(implicit_kernel::Job& job) { job.coarse_cols = 0; }
 };
 
 }  // namespace weft

@@ -42,26 +42,34 @@ double row_dot(const Field3& a, const Field3& b, std::size_t begin, int cols) {
     return sum;
 }
 
-// One direction's two springs at every particle of a row, added into y: the spring that
-// starts at p, B[p] (v_p - v_{p+o}), and the one that ends there, B[p - o] (v_p - v_{p-o}).
-// Every stream is its own restrict pointer, so the loop vectorises.
-void add_direction_row(const float* __restrict iso_f, const float* __restrict along_f,
-                       const float* __restrict ux_f, const float* __restrict uy_f,
-                       const float* __restrict uz_f, const float* __restrict iso_b,
-                       const float* __restrict along_b, const float* __restrict ux_b,
-                       const float* __restrict uy_b, const float* __restrict uz_b,
-                       const float* __restrict x, const float* __restrict y,
-                       const float* __restrict z, std::ptrdiff_t o, float* __restrict yx,
-                       float* __restrict yy, float* __restrict yz, int cols) {
+// The spring term of one direction over a row: w[p] = B[p] (v_p - v_{p+o}) for the spring
+// that starts at each particle p (zero where none does: its block is zero). Every stream is
+// its own restrict pointer, so the loop vectorises.
+void flux_row(const float* __restrict iso, const float* __restrict along,
+              const float* __restrict ux, const float* __restrict uy, const float* __restrict uz,
+              const float* __restrict x, const float* __restrict y, const float* __restrict z,
+              std::ptrdiff_t o, float* __restrict wx, float* __restrict wy, float* __restrict wz,
+              int cols) {
     for (int c = 0; c < cols; ++c) {
-        const float vx = x[c], vy = y[c], vz = z[c];
-        const float fx = vx - x[c + o], fy = vy - y[c + o], fz = vz - z[c + o];
-        const float f_along = along_f[c] * (ux_f[c] * fx + uy_f[c] * fy + uz_f[c] * fz);
-        const float gx = vx - x[c - o], gy = vy - y[c - o], gz = vz - z[c - o];
-        const float g_along = along_b[c] * (ux_b[c] * gx + uy_b[c] * gy + uz_b[c] * gz);
-        yx[c] += (iso_f[c] * fx + f_along * ux_f[c]) + (iso_b[c] * gx + g_along * ux_b[c]);
-        yy[c] += (iso_f[c] * fy + f_along * uy_f[c]) + (iso_b[c] * gy + g_along * uy_b[c]);
-        yz[c] += (iso_f[c] * fz + f_along * uz_f[c]) + (iso_b[c] * gz + g_along * uz_b[c]);
+        const float fx = x[c] - x[c + o], fy = y[c] - y[c + o], fz = z[c] - z[c + o];
+        const float f_along = along[c] * (ux[c] * fx + uy[c] * fy + uz[c] * fz);
+        wx[c] = iso[c] * fx + f_along * ux[c];
+        wy[c] = iso[c] * fy + f_along * uy[c];
+        wz[c] = iso[c] * fz + f_along * uz[c];
+    }
+}
+
+// y += w (the spring that starts here) - w' (the one that ends here: B[p - o] (v_p - v_{p-o})
+// is exactly -w[p - o], negation being exact) over a row.
+void add_flux_difference(const float* __restrict wx, const float* __restrict wy,
+                         const float* __restrict wz, const float* __restrict ex,
+                         const float* __restrict ey, const float* __restrict ez,
+                         float* __restrict yx, float* __restrict yy, float* __restrict yz,
+                         int cols) {
+    for (int c = 0; c < cols; ++c) {
+        yx[c] += wx[c] - ex[c];
+        yy[c] += wy[c] - ey[c];
+        yz[c] += wz[c] - ez[c];
     }
 }
 
@@ -86,21 +94,90 @@ void mask_row(const float* __restrict mask, float* __restrict yx, float* __restr
     }
 }
 
-// y = A v over one row, masked to zero on pinned particles.
-void product_row(const Job& job, int row, const Field3& v, const Field3& y) {
-    const std::size_t base = at(job, row);
-    const int cols = job.cols;
-    scale_row(job.mass_diagonal + base, v.x + base, v.y + base, v.z + base, y.x + base, y.y + base,
-              y.z + base, cols);
-    for (int k = 0; k < job.direction_count; ++k) {
-        const DirectionTerms& d = job.directions[k];
-        const std::ptrdiff_t o = static_cast<std::ptrdiff_t>(d.row_step) * cols + d.col_step;
-        add_direction_row(d.iso + base, d.along + base, d.ux + base, d.uy + base, d.uz + base,
-                          d.iso + base - o, d.along + base - o, d.ux + base - o, d.uy + base - o,
-                          d.uz + base - o, v.x + base, v.y + base, v.z + base, o, y.x + base,
-                          y.y + base, y.z + base, cols);
+// y = A v over the rows of a band, one row at a time, in order. Each spring's term is
+// computed once, at its start row, and kept in a ring of the last three rows (a spring
+// reaches at most two rows down) until the rows it ends on have used it; the band computes
+// the two rows above it again, so bands are independent and the arithmetic of every
+// particle is the same whatever the split.
+class BandProduct;
+float* band_scratch(int cols, int products);
+
+class BandProduct {
+  public:
+    static constexpr int ring_rows = 3;
+    static constexpr int column_padding = 2;  // |dc| <= 2: the ends of other rows read zeros
+
+    // Floats of scratch one band product needs: the ring, and a row of zeros (three
+    // components) for the springs that would start above the grid.
+    static std::size_t scratch_floats(int cols) {
+        return (static_cast<std::size_t>(ring_rows) * max_directions + 1) * 3 *
+               (static_cast<std::size_t>(cols) + 2 * column_padding);
     }
-    mask_row(job.free + base, y.x + base, y.y + base, y.z + base, cols);
+
+    BandProduct(const Job& job, const Field3& v, int begin, float* scratch)
+        : job_(job),
+          v_(v),
+          ring_(scratch),
+          padded_(static_cast<std::size_t>(job.cols) + 2 * column_padding) {
+        std::fill(ring_, ring_ + scratch_floats(job.cols), 0.0f);
+        zero_row_ = ring_ + static_cast<std::size_t>(ring_rows) * max_directions * 3 * padded_ +
+                    column_padding;
+        for (int row = std::max(0, begin - 2); row < begin; ++row) compute_fluxes(row);
+    }
+
+    // y over row `row` (the band's rows in order), masked to zero on pinned particles.
+    void row(int row, const Field3& y) {
+        compute_fluxes(row);
+        const std::size_t base = at(job_, row);
+        const int cols = job_.cols;
+        scale_row(job_.mass_diagonal + base, v_.x + base, v_.y + base, v_.z + base, y.x + base,
+                  y.y + base, y.z + base, cols);
+        for (int k = 0; k < job_.direction_count; ++k) {
+            const DirectionTerms& d = job_.directions[k];
+            // Springs that would start above the grid read the row of zeros.
+            const int from_row = row - d.row_step;
+            const float* here = flux(k, row);
+            const float* there = (from_row >= 0 ? flux(k, from_row) : zero_row_) - d.col_step;
+            add_flux_difference(here, here + padded_, here + 2 * padded_, there, there + padded_,
+                                there + 2 * padded_, y.x + base, y.y + base, y.z + base, cols);
+        }
+        mask_row(job_.free + base, y.x + base, y.y + base, y.z + base, cols);
+    }
+
+  private:
+    float* flux(int k, int row) const {
+        return ring_ +
+               (static_cast<std::size_t>(row % ring_rows) * max_directions + k) * 3 * padded_ +
+               column_padding;
+    }
+    void compute_fluxes(int row) {
+        const std::size_t base = at(job_, row);
+        for (int k = 0; k < job_.direction_count; ++k) {
+            const DirectionTerms& d = job_.directions[k];
+            const std::ptrdiff_t o =
+                static_cast<std::ptrdiff_t>(d.row_step) * job_.cols + d.col_step;
+            float* w = flux(k, row);
+            flux_row(d.iso + base, d.along + base, d.ux + base, d.uy + base, d.uz + base,
+                     v_.x + base, v_.y + base, v_.z + base, o, w, w + padded_, w + 2 * padded_,
+                     job_.cols);
+        }
+    }
+
+    const Job& job_;
+    const Field3& v_;
+    float* ring_;
+    std::size_t padded_;
+    const float* zero_row_ = nullptr;
+};
+
+// Scratch for `products` band products at once on this thread: grown on first use, so no
+// step allocates once the first has run (the pool's threads are persistent).
+float* band_scratch(int cols, int products) {
+    thread_local std::vector<float> scratch;
+    const std::size_t needed =
+        BandProduct::scratch_floats(cols) * static_cast<std::size_t>(products);
+    if (scratch.size() < needed) scratch.resize(needed);
+    return scratch.data();
 }
 
 // z = P r over n particles: a symmetric 3x3 block (xx yy zz xy xz yz) times r per particle.
@@ -293,14 +370,17 @@ void restrict_if_pair_done(const Job& job, int row) {
 }
 
 void residual_rows(const Job& job, int begin, int end, RowSums sums) {
+    float* scratch = band_scratch(job.cols, 2);
+    BandProduct at_start(job, job.start, begin, scratch);
+    BandProduct at_guess(job, job.solution, begin, scratch + BandProduct::scratch_floats(job.cols));
     for (int row = begin; row < end; ++row) {
         diagonal_row(job, row);
         const std::size_t base = at(job, row);
         // |b - A v0|² first (the residual's scale), then r at the guess, over it.
-        product_row(job, row, job.start, job.residual);
+        at_start.row(row, job.residual);
         subtract_from_rhs_row(job, row);
         sums.third[row] = row_dot(job.residual, job.residual, base, job.cols);
-        product_row(job, row, job.solution, job.residual);
+        at_guess.row(row, job.residual);
         subtract_from_rhs_row(job, row);
         precondition_row(job, row);
         sums.first[row] = row_dot(job.residual, job.preconditioned, base, job.cols);
@@ -323,10 +403,11 @@ void scale_and_add(float* __restrict out, const float* __restrict a, float s, in
 // d = z + β d and, since A is linear, q = A d = A z + β q. Only z of the neighbouring rows
 // is read, and it is complete (the update pass wrote it before this pass began).
 void direction_rows(const Job& job, int begin, int end, float beta, RowSums sums) {
+    BandProduct applied(job, job.preconditioned, begin, band_scratch(job.cols, 1));
     for (int row = begin; row < end; ++row) {
         const std::size_t base = at(job, row);
         const int cols = job.cols;
-        product_row(job, row, job.preconditioned, job.applied);
+        applied.row(row, job.applied);
         scale_and_add(job.direction.x + base, job.preconditioned.x + base, beta, cols);
         scale_and_add(job.direction.y + base, job.preconditioned.y + base, beta, cols);
         scale_and_add(job.direction.z + base, job.preconditioned.z + base, beta, cols);

@@ -269,32 +269,36 @@ double ImplicitMultilevel::apply(const implicit_kernel::Job& job, bool restricte
         });
     // The coarser levels are small (a quarter of the first and less): one thread.
     add_coarser_corrections(levels, 0, weight);
-    double added = 0.0;  // r · P x_c = (Pᵀ r) · x_c, in node order
-    for (std::size_t n = 0; n < first.residual.size(); ++n)
-        added += weight * first.residual[n] * first.correction[n];
-    // The correction spread along each coarse row's fine columns, in single precision, so
-    // the fine pass below is a plain vector loop.
+    // Pass 2, by rows of the first level: r · P x_c = (Pᵀ r) · x_c per row of nodes (summed
+    // in row order below), the correction spread along the row's fine columns in single
+    // precision, then z += P x_c on the free particles of the row's two fine rows.
     const auto cols = static_cast<std::size_t>(job.cols);
     spread.resize(3 * static_cast<std::size_t>(first.rows) * cols);
-    for (int row = 0; row < first.rows; ++row) {
-        float* x = &spread[3 * static_cast<std::size_t>(row) * cols];
-        for (std::size_t c = 0; c < cols; ++c) {
-            const double* correction = &first.correction[3 * (row * first.cols + c / 2)];
-            x[c] = static_cast<float>(weight * correction[0]);
-            x[cols + c] = static_cast<float>(weight * correction[1]);
-            x[2 * cols + c] = static_cast<float>(weight * correction[2]);
-        }
-    }
-    // Pass 2, by fine rows: z += P x_c on the free particles.
-    over_rows(job.rows, job.rows * job.cols, pool, [&](int begin, int end) {
-        for (int r = begin; r < end; ++r) {
-            const float* x = &spread[3 * static_cast<std::size_t>(r / 2) * cols];
-            const std::size_t base = job.pad + static_cast<std::size_t>(r) * cols;
-            add_masked(job.preconditioned.x + base, job.free + base, x, job.cols);
-            add_masked(job.preconditioned.y + base, job.free + base, x + cols, job.cols);
-            add_masked(job.preconditioned.z + base, job.free + base, x + 2 * cols, job.cols);
+    added_by_row.resize(static_cast<std::size_t>(first.rows));
+    over_rows(first.rows, job.rows * job.cols, pool, [&](int begin, int end) {
+        for (int row = begin; row < end; ++row) {
+            const std::size_t nodes = static_cast<std::size_t>(row) * first.cols;
+            double added_here = 0.0;
+            for (std::size_t n = 3 * nodes; n < 3 * (nodes + first.cols); ++n)
+                added_here += weight * first.residual[n] * first.correction[n];
+            added_by_row[static_cast<std::size_t>(row)] = added_here;
+            float* x = &spread[3 * static_cast<std::size_t>(row) * cols];
+            for (std::size_t c = 0; c < cols; ++c) {
+                const double* correction = &first.correction[3 * (nodes + c / 2)];
+                x[c] = static_cast<float>(weight * correction[0]);
+                x[cols + c] = static_cast<float>(weight * correction[1]);
+                x[2 * cols + c] = static_cast<float>(weight * correction[2]);
+            }
+            for (int r = 2 * row; r < std::min(2 * row + 2, job.rows); ++r) {
+                const std::size_t base = job.pad + static_cast<std::size_t>(r) * cols;
+                add_masked(job.preconditioned.x + base, job.free + base, x, job.cols);
+                add_masked(job.preconditioned.y + base, job.free + base, x + cols, job.cols);
+                add_masked(job.preconditioned.z + base, job.free + base, x + 2 * cols, job.cols);
+            }
         }
     });
+    double added = 0.0;
+    for (double value : added_by_row) added += value;
     return added;
 }
 

@@ -33,6 +33,7 @@ struct ImplicitCoarseLevel {
 struct ImplicitMultilevel {
     std::vector<ImplicitCoarseLevel> levels;  // finest coarse level first
     double weight = 1.0;                      // scale of each coarse correction
+    std::vector<double> added_by_row;         // r · P x_c per row of the first level
     std::vector<float> spread;  // the first level's correction along fine columns (x, y, z rows)
 
     // Builds every coarse level from the fine system of `job` (its direction terms, the

@@ -12,6 +12,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "../sim/test_scenes.h"
 #include "sim/simulation.h"
 #include "weft_bench/xpbd_cloth.h"
 
@@ -21,19 +22,7 @@ namespace {
 constexpr double frame = 1.0 / 60.0;  // s
 constexpr double g = 9.81;            // m/s²
 
-// A vertical chain of `particles` (the top one pinned), released at rest length.
-Scene hanging_chain(int particles, double mass, double stiffness, double damping,
-                    double rest_length, double air_drag = 0.0) {
-    Scene scene;
-    scene.cloth.rows = particles;
-    scene.cloth.cols = 1;
-    scene.cloth.spacing = rest_length;
-    scene.cloth.particle_mass = mass;
-    scene.cloth.pin_preset = PinPreset::top_row;
-    scene.structural = {true, stiffness, damping};
-    scene.forces.air_drag = air_drag;
-    return scene;
-}
+using testing::hanging_chain;
 
 TEST(XpbdCloth, HangingParticleSettlesAtTheSpringsStaticStretch) {
     // m = 0.1 kg on k = 40 N/m (ω = 20 rad/s), a dashpot of a quarter of critical damping:

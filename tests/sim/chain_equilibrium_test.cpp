@@ -16,15 +16,8 @@ TEST(HangingChain, ComesToRestAtTheExactStaticExtensionOfEachSpring) {
     const int particles = 8;
     const double mass = 0.01, stiffness = 50.0, rest_length = 0.05, gravity = 9.81;
     for (Integrator integrator : testing::all_integrators) {
-        Scene scene;
-        scene.cloth.rows = particles;
-        scene.cloth.cols = 1;
-        scene.cloth.spacing = rest_length;
-        scene.cloth.particle_mass = mass;
-        scene.cloth.pin_preset = PinPreset::top_row;
-        scene.structural = {true, stiffness, 0.2};
+        Scene scene = testing::hanging_chain(particles, mass, stiffness, 0.2, rest_length, 0.05);
         scene.forces.gravity = {0.0, -gravity, 0.0};
-        scene.forces.air_drag = 0.05;
         scene.solver = {integrator, 1e-3};
         Simulation simulation(scene);
         ASSERT_TRUE(testing::run_steps(simulation, 30'000)) << integrator_name(integrator);  // 30 s

@@ -120,18 +120,11 @@ TEST(ImplicitGridSolve, AHangingChainComesToRestAtItsExactStaticExtension) {
     // length is L + (N - s) m g / k exactly, a fixed point of the step, reached at 60 Hz.
     const int particles = 8;
     const double mass = 0.01, stiffness = 50.0, rest_length = 0.05, gravity = 9.81;
-    Scene scene;
-    scene.cloth.rows = particles;
-    scene.cloth.cols = 1;
-    scene.cloth.spacing = rest_length;
-    scene.cloth.particle_mass = mass;
-    scene.cloth.pin_preset = PinPreset::top_row;
-    scene.structural = {true, stiffness, 0.2};
+    Scene scene = testing::hanging_chain(particles, mass, stiffness, 0.2, rest_length);
     scene.forces.gravity = {0.0, -gravity, 0.0};
     scene.solver = {Integrator::implicit_euler, 1.0 / 60.0};
     Simulation simulation(scene);
     ASSERT_TRUE(testing::run_steps(simulation, 1200));  // 20 s
-    EXPECT_GT(simulation.last_linear_solve().iterations, -1);
     const Cloth& chain = simulation.cloth();
     for (int s = 1; s < particles; ++s) {
         const double length = glm::length(chain.positions[s] - chain.positions[s - 1]);

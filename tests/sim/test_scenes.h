@@ -25,6 +25,22 @@ struct GeneralImplicitPath {
     GeneralImplicitPath& operator=(const GeneralImplicitPath&) = delete;
 };
 
+// A vertical chain of `particles` grid particles (one column, the top one pinned), released
+// at rest length: spring s from the pin carries the weight below it, so at rest its length is
+// exactly L + (N - s) m g / k.
+inline Scene hanging_chain(int particles, double mass, double stiffness, double damping,
+                           double rest_length, double air_drag = 0.0) {
+    Scene scene;
+    scene.cloth.rows = particles;
+    scene.cloth.cols = 1;
+    scene.cloth.spacing = rest_length;
+    scene.cloth.particle_mass = mass;
+    scene.cloth.pin_preset = PinPreset::top_row;
+    scene.structural = {true, stiffness, damping};
+    scene.forces.air_drag = air_drag;
+    return scene;
+}
+
 // One particle of mass m hanging from a pinned one by a single spring (rows = 2, cols = 1),
 // released at the spring's rest length, so it oscillates vertically about its equilibrium.
 struct HangingSpring {

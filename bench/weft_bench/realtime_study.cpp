@@ -14,7 +14,7 @@
 
 #include "csv_file.h"
 #include "parallel/worker_pool.h"
-#include "plain_float_baseline.h"
+#include "plain_baseline.h"
 #include "plot.h"
 #include "raster/framebuffer.h"
 #include "sim/stability_limit.h"

@@ -1,4 +1,4 @@
-// The plain float step of weft-bench (bench/weft_bench/plain_float_baseline.h) must be the
+// The plain float step of weft-bench (bench/weft_bench/plain_baseline.h) must be the
 // same method as weft's symplectic Euler, differing only by single-precision rounding, or
 // the speed ratio the realtime study reports between them would compare different work.
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "sim/simulation.h"
-#include "weft_bench/plain_float_baseline.h"
+#include "weft_bench/plain_baseline.h"
 
 namespace weft::bench {
 namespace {

@@ -275,7 +275,10 @@ bool rows_maybe_overstretched(const Job& job, double ratio_squared, int row_begi
             if (row + direction.row_step >= job.rows) continue;
             const int dc = direction.col_step;
             const auto c_begin = static_cast<std::size_t>(dc < 0 ? -dc : 0);
-            const auto c_end = static_cast<std::size_t>(dc > 0 ? job.cols - dc : job.cols);
+            // A sheet narrower than the direction's reach (one column, bend springs) has no
+            // spring of it on a row: the range is empty, not negative.
+            const auto c_end =
+                static_cast<std::size_t>(std::max(dc > 0 ? job.cols - dc : job.cols, 0));
             const std::size_t first = static_cast<std::size_t>(row) * cols;
             const std::ptrdiff_t offset = direction.row_step * job.cols + dc;
             const double* __restrict a = job.positions + 3 * first;

@@ -3,6 +3,7 @@
 // grid_force_kernel_<suffix>.cpp defines WEFT_KERNEL_SUFFIX and includes this file; CMake
 // compiles each with its own instruction set. None uses FMA: -ffp-contract=off keeps every
 // product and sum rounded alike, so every build gives the same bits.
+#include <algorithm>
 #include <cmath>
 
 #include "sim/grid_force_kernel.h"

@@ -5,6 +5,7 @@
 
 #include "sim/cloth_builder.h"
 #include "sim/divergence.h"
+#include "sim/grid_force_pass.h"
 #include "sim/simulation.h"
 #include "test_scenes.h"
 
@@ -19,6 +20,21 @@ Scene stiff_undamped_sheet(Integrator integrator, double dt) {
     scene.shear = {true, 10000.0, 0.0};
     scene.solver = {integrator, dt};
     return scene;
+}
+
+TEST(DivergenceGuard, AOneColumnSheetWithBendSpringsIsJudgedLikeAnyOther) {
+    // One column: the row directions (0, 1) and (0, 2) have no spring at all. The structured
+    // stretch test once took cols - 2 < 0 as its column range and read past the sheet.
+    Scene scene = testing::hanging_chain(6, 0.01, 50.0, 0.2, 0.05);
+    scene.shear.enabled = true;
+    scene.bend.enabled = true;
+    Simulation simulation(scene);
+    ASSERT_FALSE(simulation.step().diverged());
+    EXPECT_EQ(grid_springs_maybe_longer_than(simulation.cloth(), 2.0, nullptr), false);
+    Cloth& chain = simulation.edit_cloth();
+    for (std::size_t p = 0; p < chain.particle_count(); ++p) chain.positions[p].y *= 7.0;
+    EXPECT_EQ(grid_springs_maybe_longer_than(simulation.cloth(), 2.0, nullptr), true);
+    EXPECT_TRUE(find_divergence(simulation.cloth(), true, nullptr).has_value());
 }
 
 TEST(DivergenceGuard, CatchesExplicitEulerOnAStiffUndampedSheet) {

@@ -23,8 +23,8 @@ struct DirectionTerms {
     double stiffness = 0.0;      // N/m
     double damping = 0.0;        // N·s/m
     const double* rest_lengths;  // m, per start particle, unpadded; negative: no spring
-    float* iso;                  // kg/s·... (h² k max(0, 1 - L/l)), padded
-    float* along;                // h² (k - that) + h c, padded
+    float* iso;                  // kg: h² k max(0, 1 - L/l), padded
+    float* along;                // kg: h² (k - that) + h c, padded
     float* ux;                   // u = (x_j - x_i) / |x_j - x_i|, padded
     float* uy;
     float* uz;

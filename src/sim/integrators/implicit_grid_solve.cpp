@@ -151,8 +151,6 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     if (cloth.grid_stencil.directions.size() > implicit_kernel::max_directions) return false;
     solver.prepare(cloth.rows, cloth.cols);
     implicit_kernel::Job& job = solver.job;
-    const std::size_t count = cloth.particle_count();
-
     // f(x0, v = 0): gravity, the wind's push and the elastic springs; the dampers are
     // linear in v and live in the matrix (see implicit_grid_kernel.inl).
     ForceField static_field = field;
@@ -241,8 +239,8 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     const double scale = std::sqrt(sum_rows(row_sums.third, rows));
     const double target = settings.tolerance(dt) * scale;
 
-    // Preconditioned conjugate gradient (block Jacobi), in single precision; the scalars
-    // and every sum in double.
+    // Preconditioned conjugate gradient (block Jacobi plus the coarse levels), in single
+    // precision; the scalars and every sum in double.
     for (float* array : {job.direction.x, job.direction.y, job.direction.z, job.product.x,
                          job.product.y, job.product.z})
         std::fill(array, array + solver.stride, 0.0f);
@@ -292,7 +290,6 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
         }
     });
     solver.has_previous_change = true;
-    (void)count;
     return true;
 }
 

@@ -64,13 +64,6 @@ void describe_field(const ForceField& field, grid_kernel::Job& job) {
     job.air_drag = field.air_drag;
 }
 
-// The build of a kernel function for the current SIMD level.
-template <class Function>
-Function* kernel_of(Function* baseline, Function* avx2, Function* avx512) {
-    const SimdLevel level = simd_level();
-    return level == SimdLevel::avx512 ? avx512 : level == SimdLevel::avx2 ? avx2 : baseline;
-}
-
 bool use_threads(const Cloth& cloth, WorkerPool* pool) {
     return pool && pool->thread_count() > 1 && cloth.particle_count() >= min_particles_for_threads;
 }

@@ -25,6 +25,14 @@ SimdLevel simd_level();
 void set_simd_level(SimdLevel level);  // clamped to what the CPU supports; for tests, benches
 const char* simd_level_name(SimdLevel level);
 
+// The build of a kernel function for the current SIMD level (the structured force pass's and
+// the structured implicit solve's row kernels are each built three times).
+template <class Function>
+Function* kernel_of(Function* baseline, Function* avx2, Function* avx512) {
+    const SimdLevel level = simd_level();
+    return level == SimdLevel::avx512 ? avx512 : level == SimdLevel::avx2 ? avx2 : baseline;
+}
+
 // Gravity, air drag and every spring force into `forces` (overwritten), or false — touching
 // nothing — when the cloth has no usable grid stencil. The drag handle and repulsion
 // contacts are the caller's (accumulate_forces adds them after).

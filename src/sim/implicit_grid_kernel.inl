@@ -16,6 +16,8 @@
 // is the same bit for bit for any split; sums over particles are taken per row in sixteen
 // fixed lanes and then row by row, so they are too, and for every vector width.
 
+#include "sim/symmetric_block.inl"
+
 constexpr int sum_lanes = 16;
 
 inline std::size_t at(const Job& job, int row) {
@@ -269,23 +271,8 @@ void setup_rows(const Job& job, int begin, int end, double warm_start) {
     }
 }
 
-// The inverse of a symmetric 3x3 block by cofactors, in double (the block is dominated by
-// rank-one spring terms, so it can be far from the identity).
-void invert_symmetric(double xx, double yy, double zz, double xy, double xz, double yz,
-                      double out[6]) {
-    const double c_xx = yy * zz - yz * yz;
-    const double c_xy = xz * yz - xy * zz;
-    const double c_xz = xy * yz - xz * yy;
-    const double determinant = xx * c_xx + xy * c_xy + xz * c_xz;
-    const double inverse = determinant > 0.0 ? 1.0 / determinant : 0.0;
-    out[0] = c_xx * inverse;
-    out[1] = (xx * zz - xz * xz) * inverse;
-    out[2] = (xx * yy - xy * xy) * inverse;
-    out[3] = c_xy * inverse;
-    out[4] = c_xz * inverse;
-    out[5] = (xy * xz - xx * yz) * inverse;
-}
-
+// The inverse of each particle's diagonal block is taken in double (symmetric_block.inl):
+// the block is dominated by rank-one spring terms, so it can be far from the identity.
 void diagonal_row(const Job& job, int row) {
     const std::size_t base = at(job, row);
     for (int c = 0; c < job.cols; ++c) {
@@ -310,7 +297,7 @@ void diagonal_row(const Job& job, int row) {
         const double block[6] = {xx, yy, zz, xy, xz, yz};
         for (int e = 0; e < 6; ++e) job.diagonal[e][i] = static_cast<float>(block[e]) * job.free[i];
         double inverse[6];
-        invert_symmetric(xx, yy, zz, xy, xz, yz, inverse);
+        invert_symmetric_block(block, inverse);
         for (int e = 0; e < 6; ++e)
             job.inverse_diagonal[e][i] = static_cast<float>(inverse[e]) * job.free[i];
     }
@@ -355,11 +342,8 @@ void restrict_row_pair(const Job& job, int row) {
             sum[a] = s;
             job.coarse_residual[3 * node + a] = s;
         }
-        const double* inverse = job.coarse_inverse + 6 * node;
-        double* out = job.coarse_correction + 3 * node;
-        out[0] = inverse[0] * sum[0] + inverse[3] * sum[1] + inverse[4] * sum[2];
-        out[1] = inverse[3] * sum[0] + inverse[1] * sum[1] + inverse[5] * sum[2];
-        out[2] = inverse[4] * sum[0] + inverse[5] * sum[1] + inverse[2] * sum[2];
+        multiply_symmetric_block(job.coarse_inverse + 6 * node, sum,
+                                 job.coarse_correction + 3 * node);
     }
 }
 

@@ -18,12 +18,6 @@ std::atomic<bool> structured_solve_enabled{true};
 // hand-offs (four per iteration).
 constexpr std::size_t min_particles_for_threads = 4096;
 
-template <class Function>
-Function* kernel_of(Function* baseline, Function* avx2, Function* avx512) {
-    const SimdLevel level = simd_level();
-    return level == SimdLevel::avx512 ? avx512 : level == SimdLevel::avx2 ? avx2 : baseline;
-}
-
 // Runs pass(begin, end) over the rows, split between the pool's threads when worth it, in
 // whole pairs of rows: the update pass sums each pair into the first coarse level.
 template <class Pass>

@@ -5,6 +5,8 @@
 namespace weft {
 namespace {
 
+#include "sim/symmetric_block.inl"
+
 // The four forward neighbour offsets of a coarse node, (row, col).
 constexpr int forward_rows[4] = {0, 1, 1, 1};
 constexpr int forward_cols[4] = {1, -1, 0, 1};
@@ -28,27 +30,6 @@ void add_coupling(ImplicitCoarseLevel& level, int i, int j, int row_step, int co
         add_block(&level.neighbours[(static_cast<std::size_t>(i) * 4 + slot) * 6], block, scale);
     else
         add_block(&level.neighbours[(static_cast<std::size_t>(j) * 4 + 0) * 6], block, scale);
-}
-
-void invert_symmetric(const double* a, double* out) {
-    const double xx = a[0], yy = a[1], zz = a[2], xy = a[3], xz = a[4], yz = a[5];
-    const double c_xx = yy * zz - yz * yz;
-    const double c_xy = xz * yz - xy * zz;
-    const double c_xz = xy * yz - xz * yy;
-    const double determinant = xx * c_xx + xy * c_xy + xz * c_xz;
-    const double inverse = determinant > 0.0 ? 1.0 / determinant : 0.0;
-    out[0] = c_xx * inverse;
-    out[1] = (xx * zz - xz * xz) * inverse;
-    out[2] = (xx * yy - xy * xy) * inverse;
-    out[3] = c_xy * inverse;
-    out[4] = c_xz * inverse;
-    out[5] = (xy * xz - xx * yz) * inverse;
-}
-
-void multiply_block(const double* a, const double* v, double* out) {
-    out[0] = a[0] * v[0] + a[3] * v[1] + a[4] * v[2];
-    out[1] = a[3] * v[0] + a[1] * v[1] + a[5] * v[2];
-    out[2] = a[4] * v[0] + a[5] * v[1] + a[2] * v[2];
 }
 
 void size_level(ImplicitCoarseLevel& level, int rows, int cols) {
@@ -87,7 +68,7 @@ int aggregate(int row, int col, int coarse_cols) {
 void invert_level(ImplicitCoarseLevel& level) {
     const std::size_t nodes = level.diagonal.size() / 6;
     for (std::size_t n = 0; n < nodes; ++n)
-        invert_symmetric(&level.diagonal[6 * n], &level.inverse[6 * n]);
+        invert_symmetric_block(&level.diagonal[6 * n], &level.inverse[6 * n]);
 }
 
 // A fine spring's coupling block A_pq = -B, B = iso I + along u uᵀ, or false where the
@@ -151,7 +132,7 @@ void build_from_fine(ImplicitCoarseLevel& level, const implicit_kernel::Job& job
                         if (fine_coupling(job, d, r, c, coupling))
                             add_block(&level.neighbours[(node * 4 + 0) * 6], coupling, 1.0);
                     }
-        invert_symmetric(diagonal, &level.inverse[6 * node]);
+        invert_symmetric_block(diagonal, &level.inverse[6 * node]);
     };
     over_rows(level.rows, job.rows * job.cols, pool, [&](int begin, int end) {
         for (int row = begin; row < end; ++row)
@@ -193,7 +174,8 @@ void apply_level(std::vector<ImplicitCoarseLevel>& levels, std::size_t index, do
     ImplicitCoarseLevel& level = levels[index];
     const std::size_t nodes = level.diagonal.size() / 6;
     for (std::size_t n = 0; n < nodes; ++n)
-        multiply_block(&level.inverse[6 * n], &level.residual[3 * n], &level.correction[3 * n]);
+        multiply_symmetric_block(&level.inverse[6 * n], &level.residual[3 * n],
+                                 &level.correction[3 * n]);
     add_coarser_corrections(levels, index, weight);
 }
 
@@ -264,7 +246,7 @@ double ImplicitMultilevel::apply(const implicit_kernel::Job& job, bool restricte
                             sum[2] += static_cast<double>(job.residual.z[i]);
                         }
                     for (int a = 0; a < 3; ++a) first.residual[3 * n + a] = sum[a];
-                    multiply_block(&first.inverse[6 * n], sum, &first.correction[3 * n]);
+                    multiply_symmetric_block(&first.inverse[6 * n], sum, &first.correction[3 * n]);
                 }
         });
     // The coarser levels are small (a quarter of the first and less): one thread.

@@ -68,21 +68,8 @@ void ImplicitGridSolver::prepare(int grid_rows, int grid_cols) {
     bind();
 }
 
-ImplicitGridSolver::ImplicitGridSolver(const ImplicitGridSolver& other)
-    : rows(other.rows),
-      cols(other.cols),
-      pad(other.pad),
-      stride(other.stride),
-      storage(other.storage),
-      row_sums(other.row_sums),
-      static_forces(other.static_forces),
-      zero_velocities(other.zero_velocities),
-      job(other.job),
-      multilevel(other.multilevel),
-      has_previous_change(other.has_previous_change),
-      last_iterations(other.last_iterations),
-      last_relative_residual(other.last_relative_residual) {
-    if (!storage.empty()) bind();
+ImplicitGridSolver::ImplicitGridSolver(const ImplicitGridSolver& other) {
+    *this = other;  // one list of what a copy takes: the assignment's
 }
 
 ImplicitGridSolver& ImplicitGridSolver::operator=(const ImplicitGridSolver& other) {

@@ -71,72 +71,86 @@ void invert_level(ImplicitCoarseLevel& level) {
         invert_symmetric_block(&level.diagonal[6 * n], &level.inverse[6 * n]);
 }
 
-// A fine spring's coupling block A_pq = -B, B = iso I + along u uᵀ, or false where the
-// spring is missing or an end is pinned (the filtered system has no coupling there).
-bool fine_coupling(const implicit_kernel::Job& job, const implicit_kernel::DirectionTerms& d, int r,
-                   int c, double coupling[6]) {
-    const int r2 = r + d.row_step, c2 = c + d.col_step;
-    if (r2 >= job.rows || c2 < 0 || c2 >= job.cols) return false;
-    const std::size_t i = job.pad + static_cast<std::size_t>(r) * job.cols + c;
-    const std::size_t j = job.pad + static_cast<std::size_t>(r2) * job.cols + c2;
-    if (job.free[i] == 0.0f || job.free[j] == 0.0f) return false;
-    const double iso = d.iso[i], along = d.along[i];
-    if (iso == 0.0 && along == 0.0) return false;
-    const double ux = d.ux[i], uy = d.uy[i], uz = d.uz[i];
-    coupling[0] = -(iso + along * ux * ux);
-    coupling[1] = -(iso + along * uy * uy);
-    coupling[2] = -(iso + along * uz * uz);
-    coupling[3] = -along * ux * uy;
-    coupling[4] = -along * ux * uz;
-    coupling[5] = -along * uy * uz;
-    return true;
+// The coupling blocks A_pq = -B, B = iso I + along u uᵀ, of one direction's springs that
+// start on fine row `row`, as six rows of `cols` floats (xx yy zz xy xz yz): zero where the
+// spring is missing or an end is pinned (the filtered system has no coupling there). Off the
+// grid, the padding's zero free mask does that; across a column edge, the zero terms.
+void fine_couplings(const implicit_kernel::Job& job, const implicit_kernel::DirectionTerms& d,
+                    int row, float* __restrict out) {
+    const int cols = job.cols;
+    const std::size_t base = job.pad + static_cast<std::size_t>(row) * cols;
+    const std::ptrdiff_t o = static_cast<std::ptrdiff_t>(d.row_step) * cols + d.col_step;
+    const float* __restrict iso = d.iso + base;
+    const float* __restrict along = d.along + base;
+    const float* __restrict ux = d.ux + base;
+    const float* __restrict uy = d.uy + base;
+    const float* __restrict uz = d.uz + base;
+    const float* __restrict free_here = job.free + base;
+    const float* __restrict free_there = job.free + base + o;
+    for (int c = 0; c < cols; ++c) {
+        const float minus_mask = -(free_here[c] * free_there[c]);
+        const float a = minus_mask * along[c], i = minus_mask * iso[c];
+        out[c] = i + a * ux[c] * ux[c];
+        out[cols + c] = i + a * uy[c] * uy[c];
+        out[2 * cols + c] = i + a * uz[c] * uz[c];
+        out[3 * cols + c] = a * ux[c] * uy[c];
+        out[4 * cols + c] = a * ux[c] * uz[c];
+        out[5 * cols + c] = a * uy[c] * uz[c];
+    }
 }
 
 // The first coarse level, from the fine stencil: A_c = Pᵀ F A F P over the free particles.
-// Each node gathers what is its own (so rows of nodes can be built on any thread, in the
-// same order): its particles' diagonal blocks, twice each spring inside it, the springs to
-// its forward neighbours, and for its (0, 1) neighbour also the springs that start there and
-// end in it.
+// A spring from fine (r, c) to (r + dr, c + dc) joins the aggregates (r/2, c/2) and
+// ((r + dr)/2, (c + dc)/2): which of a node's slots it lands in depends only on the parity of
+// r and c, so each direction has a table of four. Springs inside an aggregate cancel against
+// their share of the fine diagonal blocks (twice -B); the others go to the forward slot, or,
+// pointing back along the row, to the left node's (0, 1) slot. Coarse rows are built whole by
+// one thread, fine rows and columns in order, so every sum is the same for any split.
 void build_from_fine(ImplicitCoarseLevel& level, const implicit_kernel::Job& job,
                      WorkerPool* pool) {
     size_level(level, (job.rows + 1) / 2, (job.cols + 1) / 2);
-    auto build_node = [&](int row, int col) {
-        const std::size_t node = static_cast<std::size_t>(row) * level.cols + col;
-        double* diagonal = &level.diagonal[6 * node];
-        double coupling[6];
-        for (int r = 2 * row; r < std::min(2 * row + 2, job.rows); ++r)
-            for (int c = 2 * col; c < std::min(2 * col + 2, job.cols); ++c) {
-                const std::size_t i = job.pad + static_cast<std::size_t>(r) * job.cols + c;
-                if (job.free[i] == 0.0f) continue;
-                for (int e = 0; e < 6; ++e) diagonal[e] += job.diagonal[e][i];
+    int slots[implicit_kernel::max_directions][2][2];
+    for (int k = 0; k < job.direction_count; ++k)
+        for (int row_parity = 0; row_parity < 2; ++row_parity)
+            for (int col_parity = 0; col_parity < 2; ++col_parity) {
+                const implicit_kernel::DirectionTerms& d = job.directions[k];
+                // Floor division: a column step of -1 from an even column is a node back.
+                const int row_step = (row_parity + d.row_step + 2) / 2 - 1;
+                const int col_step = (col_parity + d.col_step + 2) / 2 - 1;
+                slots[k][row_parity][col_parity] = slot_of(row_step, col_step);
+            }
+    const int cols = job.cols;
+    over_rows(level.rows, job.rows * job.cols, pool, [&](int begin, int end) {
+        thread_local std::vector<float> couplings;  // grown once: no step allocates
+        couplings.resize(6 * static_cast<std::size_t>(cols));
+        for (int row = begin; row < end; ++row) {
+            const std::size_t first_node = static_cast<std::size_t>(row) * level.cols;
+            for (int r = 2 * row; r < std::min(2 * row + 2, job.rows); ++r) {
+                const std::size_t base = job.pad + static_cast<std::size_t>(r) * cols;
+                for (int c = 0; c < cols; ++c) {
+                    double* diagonal = &level.diagonal[6 * (first_node + c / 2)];
+                    for (int e = 0; e < 6; ++e) diagonal[e] += job.diagonal[e][base + c];
+                }
                 for (int k = 0; k < job.direction_count; ++k) {
-                    const implicit_kernel::DirectionTerms& d = job.directions[k];
-                    if (!fine_coupling(job, d, r, c, coupling)) continue;
-                    const int row_step = (r + d.row_step) / 2 - row;
-                    const int col_step = (c + d.col_step) / 2 - col;
-                    const int slot = slot_of(row_step, col_step);
-                    if (slot == -2)
-                        add_block(diagonal, coupling, 2.0);
-                    else if (slot >= 0)
-                        add_block(&level.neighbours[(node * 4 + slot) * 6], coupling, 1.0);
-                    // slot -1, (0, -1): the node to the left gathers it as its (0, 1) coupling.
+                    fine_couplings(job, job.directions[k], r, couplings.data());
+                    const int* slot_by_parity = slots[k][r % 2];
+                    for (int c = 0; c < cols; ++c) {
+                        const int slot = slot_by_parity[c % 2];
+                        if (slot == -1 && c < 2) continue;  // off the grid: no spring
+                        const std::size_t node = first_node + c / 2;
+                        double* into = slot == -2   ? &level.diagonal[6 * node]
+                                       : slot == -1 ? &level.neighbours[(node - 1) * 24]
+                                                    : &level.neighbours[(node * 4 + slot) * 6];
+                        const double scale = slot == -2 ? 2.0 : 1.0;
+                        for (int e = 0; e < 6; ++e)
+                            into[e] += scale * couplings[static_cast<std::size_t>(e) * cols + c];
+                    }
                 }
             }
-        // Springs from the (0, 1) neighbour that end here.
-        if (col + 1 < level.cols)
-            for (int r = 2 * row; r < std::min(2 * row + 2, job.rows); ++r)
-                for (int c = 2 * col + 2; c < std::min(2 * col + 4, job.cols); ++c)
-                    for (int k = 0; k < job.direction_count; ++k) {
-                        const implicit_kernel::DirectionTerms& d = job.directions[k];
-                        if ((r + d.row_step) / 2 != row || (c + d.col_step) / 2 != col) continue;
-                        if (fine_coupling(job, d, r, c, coupling))
-                            add_block(&level.neighbours[(node * 4 + 0) * 6], coupling, 1.0);
-                    }
-        invert_symmetric_block(diagonal, &level.inverse[6 * node]);
-    };
-    over_rows(level.rows, job.rows * job.cols, pool, [&](int begin, int end) {
-        for (int row = begin; row < end; ++row)
-            for (int col = 0; col < level.cols; ++col) build_node(row, col);
+            for (int col = 0; col < level.cols; ++col)
+                invert_symmetric_block(&level.diagonal[6 * (first_node + col)],
+                                       &level.inverse[6 * (first_node + col)]);
+        }
     });
 }
 
@@ -166,21 +180,57 @@ void build_from_coarse(ImplicitCoarseLevel& level, const ImplicitCoarseLevel& fi
 
 // The levels below `index` add their correction into this level's: restrict the residual,
 // correct there (recursively), prolong back.
-void add_coarser_corrections(std::vector<ImplicitCoarseLevel>& levels, std::size_t index,
-                             double weight);
+void add_coarser_corrections(std::vector<ImplicitCoarseLevel>& levels, const BandedCholesky& exact,
+                             std::size_t index, double weight);
 
-// correction = D⁻¹ residual at this level, plus the levels below it.
-void apply_level(std::vector<ImplicitCoarseLevel>& levels, std::size_t index, double weight) {
+// The coarsest level's matrix into its banded factor (banded_cholesky.h). Node n's
+// unknowns are 3n .. 3n + 2 and its forward neighbours are later nodes, at most cols + 1
+// on, so the band reaches 3 (cols + 1) + 2 unknowns right of the diagonal.
+void factor_exactly(ImplicitCoarseLevel& level, BandedCholesky& exact) {
+    const std::size_t nodes = static_cast<std::size_t>(level.rows) * level.cols;
+    exact.reset(3 * nodes, 3 * static_cast<std::size_t>(level.cols) + 5);
+    // Where each of the six stored entries of a symmetric block sits, (row, column).
+    constexpr int entry_row[6] = {0, 1, 2, 0, 0, 1};
+    constexpr int entry_col[6] = {0, 1, 2, 1, 2, 2};
+    for (int r = 0; r < level.rows; ++r)
+        for (int c = 0; c < level.cols; ++c) {
+            const std::size_t n = static_cast<std::size_t>(r) * level.cols + c;
+            for (int e = 0; e < 6; ++e)
+                exact.add(3 * n + entry_row[e], 3 * n + entry_col[e], level.diagonal[6 * n + e]);
+            for (int slot = 0; slot < 4; ++slot) {
+                const int r2 = r + forward_rows[slot], c2 = c + forward_cols[slot];
+                if (r2 >= level.rows || c2 < 0 || c2 >= level.cols) continue;
+                const std::size_t m = static_cast<std::size_t>(r2) * level.cols + c2;
+                const double* block = &level.neighbours[(n * 4 + slot) * 6];
+                for (int e = 0; e < 6; ++e) {
+                    exact.add(3 * n + entry_row[e], 3 * m + entry_col[e], block[e]);
+                    if (entry_row[e] != entry_col[e])
+                        exact.add(3 * n + entry_col[e], 3 * m + entry_row[e], block[e]);
+                }
+            }
+        }
+    exact.factor();
+}
+
+// correction = D⁻¹ residual at this level, plus the levels below it; on the coarsest level,
+// correction = A⁻¹ residual exactly.
+void apply_level(std::vector<ImplicitCoarseLevel>& levels, const BandedCholesky& exact,
+                 std::size_t index, double weight) {
     ImplicitCoarseLevel& level = levels[index];
+    if (index + 1 == levels.size()) {
+        level.correction = level.residual;
+        exact.solve(level.correction.data());
+        return;
+    }
     const std::size_t nodes = level.diagonal.size() / 6;
     for (std::size_t n = 0; n < nodes; ++n)
         multiply_symmetric_block(&level.inverse[6 * n], &level.residual[3 * n],
                                  &level.correction[3 * n]);
-    add_coarser_corrections(levels, index, weight);
+    add_coarser_corrections(levels, exact, index, weight);
 }
 
-void add_coarser_corrections(std::vector<ImplicitCoarseLevel>& levels, std::size_t index,
-                             double weight) {
+void add_coarser_corrections(std::vector<ImplicitCoarseLevel>& levels, const BandedCholesky& exact,
+                             std::size_t index, double weight) {
     if (index + 1 == levels.size()) return;
     ImplicitCoarseLevel& level = levels[index];
     ImplicitCoarseLevel& coarser = levels[index + 1];
@@ -191,7 +241,7 @@ void add_coarser_corrections(std::vector<ImplicitCoarseLevel>& levels, std::size
             const std::size_t m = static_cast<std::size_t>(aggregate(r, c, coarser.cols));
             for (int a = 0; a < 3; ++a) coarser.residual[3 * m + a] += level.residual[3 * n + a];
         }
-    apply_level(levels, index + 1, weight);
+    apply_level(levels, exact, index + 1, weight);
     for (int r = 0; r < level.rows; ++r)
         for (int c = 0; c < level.cols; ++c) {
             const std::size_t n = static_cast<std::size_t>(r) * level.cols + c;
@@ -204,15 +254,16 @@ void add_coarser_corrections(std::vector<ImplicitCoarseLevel>& levels, std::size
 }  // namespace
 
 void ImplicitMultilevel::build(const implicit_kernel::Job& job, WorkerPool* pool) {
-    // Down to a level of at most 4 nodes a side.
+    // Down to a level of at most coarsest_side nodes a side, solved exactly.
     std::size_t count = 0;
-    for (int rows = job.rows, cols = job.cols; rows > 4 || cols > 4;
+    for (int rows = job.rows, cols = job.cols; rows > coarsest_side || cols > coarsest_side;
          rows = (rows + 1) / 2, cols = (cols + 1) / 2)
         ++count;
     levels.resize(count);
     if (count == 0) return;
     build_from_fine(levels[0], job, pool);
     for (std::size_t l = 1; l < count; ++l) build_from_coarse(levels[l], levels[l - 1]);
+    factor_exactly(levels.back(), exact);
 }
 
 void ImplicitMultilevel::attach(implicit_kernel::Job& job) {
@@ -250,7 +301,11 @@ double ImplicitMultilevel::apply(const implicit_kernel::Job& job, bool restricte
                 }
         });
     // The coarser levels are small (a quarter of the first and less): one thread.
-    add_coarser_corrections(levels, 0, weight);
+    if (levels.size() == 1) {  // the first level is the coarsest: exact, not D⁻¹
+        first.correction = first.residual;
+        exact.solve(first.correction.data());
+    }
+    add_coarser_corrections(levels, exact, 0, weight);
     // Pass 2, by rows of the first level: r · P x_c = (Pᵀ r) · x_c per row of nodes (summed
     // in row order below), the correction spread along the row's fine columns in single
     // precision, then z += P x_c on the free particles of the row's two fine rows.

@@ -22,16 +22,7 @@ inline double* ring_row(double* base, std::size_t row_stride, int row) {
     return base + static_cast<std::size_t>(row % 3) * row_stride;
 }
 
-// Interleaved x y z into three per-component arrays (a function of its own, with
-// non-overlapping arguments, so it vectorises).
-void deinterleave(const double* __restrict xyz, double* __restrict x, double* __restrict y,
-                  double* __restrict z, std::size_t count) {
-    for (std::size_t c = 0; c < count; ++c) {
-        x[c] = xyz[3 * c];
-        y[c] = xyz[3 * c + 1];
-        z[c] = xyz[3 * c + 2];
-    }
-}
+#include "sim/deinterleave.inl"
 
 // Per-component rows: component k of row slot s starts at state + (s * 6 + k) * padded.
 void load_state_row(const Job& job, int row, double* state_ring, std::size_t padded) {

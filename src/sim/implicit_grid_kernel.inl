@@ -16,6 +16,7 @@
 // is the same bit for bit for any split; sums over particles are taken per row in sixteen
 // fixed lanes and then row by row, so they are too, and for every vector width.
 
+#include "sim/deinterleave.inl"
 #include "sim/symmetric_block.inl"
 
 constexpr int sum_lanes = 16;
@@ -206,46 +207,77 @@ void precondition_row(const Job& job, int row) {
                     job.preconditioned.y + base, job.preconditioned.z + base, job.cols);
 }
 
+// One direction's share of h² K + h C for the springs that start on a row, from the
+// per-component positions of their two ends (here, there): each stream its own restrict
+// pointer and no branch, so the loop vectorises.
+void spring_terms_row(const double* __restrict rest, const double* __restrict hx,
+                      const double* __restrict hy, const double* __restrict hz,
+                      const double* __restrict tx, const double* __restrict ty,
+                      const double* __restrict tz, double stiffness, double damping, double h,
+                      float* __restrict iso, float* __restrict along, float* __restrict ux,
+                      float* __restrict uy, float* __restrict uz, int cols) {
+    for (int c = 0; c < cols; ++c) {
+        const double rest_length = rest[c];
+        const double ex = tx[c] - hx[c], ey = ty[c] - hy[c], ez = tz[c] - hz[c];
+        const double length = std::sqrt(ex * ex + ey * ey + ez * ez);
+        // A dead spring or coincident ends: no terms. As in the force pass
+        // (grid_force_kernel.inl), `none` is 0 or 1, so a live spring divides by l exactly
+        // and a masked lane by 1.
+        const double none = length > 0.0 ? 0.0 : 1.0;
+        const double live = (rest_length >= 0.0 ? 1.0 : 0.0) * (1.0 - none);
+        const double inverse_length = live / (length + none);
+        // The transverse stiffness k (1 - L/l), clamped at 0 for a compressed spring
+        // (negative, it would make A indefinite; see implicit_euler.cpp).
+        const double stretch = 1.0 - rest_length * inverse_length;
+        const double transverse = stiffness * (stretch > 0.0 ? stretch : 0.0);
+        iso[c] = static_cast<float>(live * (h * h * transverse));
+        along[c] = static_cast<float>(live * (h * h * (stiffness - transverse) + h * damping));
+        ux[c] = static_cast<float>(ex * inverse_length);
+        uy[c] = static_cast<float>(ey * inverse_length);
+        uz[c] = static_cast<float>(ez * inverse_length);
+    }
+}
+
 void setup_rows(const Job& job, int begin, int end, double warm_start) {
     const double h = job.dt;
     const int cols = job.cols;
+    // Positions stream through a ring of three rows in per-component arrays (a spring reaches
+    // at most two rows down), padded by two columns either side so that a spring's other
+    // end is always a plain offset; what the padding holds is never used (no spring there).
+    constexpr int ring_padding = 2;
+    const std::size_t padded = static_cast<std::size_t>(cols) + 2 * ring_padding;
+    thread_local std::vector<double> ring;  // grown once: no step allocates
+    if (ring.size() < 9 * padded) ring.assign(9 * padded, 0.0);
+    auto ring_row = [&](int row) {
+        return ring.data() + static_cast<std::size_t>(row % 3) * 3 * padded + ring_padding;
+    };
+    auto load = [&](int row) {
+        double* x = ring_row(row);
+        deinterleave(job.positions + 3 * static_cast<std::size_t>(row) * cols, x, x + padded,
+                     x + 2 * padded, static_cast<std::size_t>(cols));
+    };
+    for (int row = begin; row < std::min(begin + 2, job.rows); ++row) load(row);
     // The springs that start on these rows: their blocks of h² K + h C.
     for (int row = begin; row < end; ++row) {
+        if (row + 2 < job.rows) load(row + 2);
         const std::size_t base = at(job, row);
         const std::size_t first = static_cast<std::size_t>(row) * static_cast<std::size_t>(cols);
+        const double* here = ring_row(row);
         for (int k = 0; k < job.direction_count; ++k) {
             const DirectionTerms& d = job.directions[k];
-            const bool inside = row + d.row_step < job.rows;
-            const std::ptrdiff_t o = static_cast<std::ptrdiff_t>(d.row_step) * cols + d.col_step;
-            const double* __restrict rest = d.rest_lengths + first;
-            const double* __restrict x = job.positions;
-            for (int c = 0; c < cols; ++c) {
-                const std::size_t p = first + static_cast<std::size_t>(c);
-                const double rest_length = inside ? rest[c] : -1.0;
-                // The other end only where a spring is: elsewhere p itself (never out of range).
-                const std::size_t q =
-                    rest_length >= 0.0
-                        ? static_cast<std::size_t>(static_cast<std::ptrdiff_t>(p) + o)
-                        : p;
-                const double ex = x[3 * q] - x[3 * p];
-                const double ey = x[3 * q + 1] - x[3 * p + 1];
-                const double ez = x[3 * q + 2] - x[3 * p + 2];
-                const double length = std::sqrt(ex * ex + ey * ey + ez * ez);
-                const bool live = rest_length >= 0.0 && length > 0.0;
-                const double inverse_length = live ? 1.0 / length : 0.0;
-                // The transverse stiffness k (1 - L/l), clamped at 0 for a compressed spring
-                // (negative, it would make A indefinite; see implicit_euler.cpp).
-                const double transverse =
-                    d.stiffness * std::max(0.0, 1.0 - rest_length * inverse_length);
-                const std::size_t i = base + static_cast<std::size_t>(c);
-                d.iso[i] = live ? static_cast<float>(h * h * transverse) : 0.0f;
-                d.along[i] =
-                    live ? static_cast<float>(h * h * (d.stiffness - transverse) + h * d.damping)
-                         : 0.0f;
-                d.ux[i] = static_cast<float>(ex * inverse_length);
-                d.uy[i] = static_cast<float>(ey * inverse_length);
-                d.uz[i] = static_cast<float>(ez * inverse_length);
+            float* __restrict iso = d.iso + base;
+            float* __restrict along = d.along + base;
+            float* __restrict ux = d.ux + base;
+            float* __restrict uy = d.uy + base;
+            float* __restrict uz = d.uz + base;
+            if (row + d.row_step >= job.rows) {  // no spring of this direction starts here
+                for (float* terms : {iso, along, ux, uy, uz}) std::fill(terms, terms + cols, 0.0f);
+                continue;
             }
+            const double* there = ring_row(row + d.row_step) + d.col_step;
+            spring_terms_row(d.rest_lengths + first, here, here + padded, here + 2 * padded, there,
+                             there + padded, there + 2 * padded, d.stiffness, d.damping, h, iso,
+                             along, ux, uy, uz, cols);
         }
         // b, v0, the guess, the mass diagonal and the free mask.
         for (int c = 0; c < cols; ++c) {

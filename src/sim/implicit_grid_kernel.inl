@@ -303,35 +303,66 @@ void setup_rows(const Job& job, int begin, int end, double warm_start) {
     }
 }
 
-// The inverse of each particle's diagonal block is taken in double (symmetric_block.inl):
-// the block is dominated by rank-one spring terms, so it can be far from the identity.
-void diagonal_row(const Job& job, int row) {
+// Adds the diagonal share of one direction's blocks, iso I + along u uᵀ, over a row into
+// six per-component double accumulators (each its own restrict parameter, so it vectorises).
+void add_diagonal_terms(const float* __restrict iso, const float* __restrict along,
+                        const float* __restrict ux, const float* __restrict uy,
+                        const float* __restrict uz, double* __restrict xx, double* __restrict yy,
+                        double* __restrict zz, double* __restrict xy, double* __restrict xz,
+                        double* __restrict yz, int cols) {
+    for (int c = 0; c < cols; ++c) {
+        const double i = iso[c], a = along[c];
+        const double x = ux[c], y = uy[c], z = uz[c];
+        xx[c] += i + a * x * x;
+        yy[c] += i + a * y * y;
+        zz[c] += i + a * z * z;
+        xy[c] += a * x * y;
+        xz[c] += a * x * z;
+        yz[c] += a * y * z;
+    }
+}
+
+// Each particle's diagonal block of A over a row, and its inverse, the preconditioner. Both
+// are taken in double (symmetric_block.inl): the block is dominated by rank-one spring
+// terms, so it can be far from the identity. Per-component loops, so they vectorise.
+void diagonal_row(const Job& job, int row, double* __restrict block) {
     const std::size_t base = at(job, row);
-    for (int c = 0; c < job.cols; ++c) {
-        const std::size_t i = base + static_cast<std::size_t>(c);
-        double xx = job.mass_diagonal[i], yy = xx, zz = xx, xy = 0.0, xz = 0.0, yz = 0.0;
-        for (int k = 0; k < job.direction_count; ++k) {
-            const DirectionTerms& d = job.directions[k];
-            const std::ptrdiff_t o =
-                static_cast<std::ptrdiff_t>(d.row_step) * job.cols + d.col_step;
-            for (const std::size_t j :
-                 {i, static_cast<std::size_t>(static_cast<std::ptrdiff_t>(i) - o)}) {
-                const double iso = d.iso[j], along = d.along[j];
-                const double ux = d.ux[j], uy = d.uy[j], uz = d.uz[j];
-                xx += iso + along * ux * ux;
-                yy += iso + along * uy * uy;
-                zz += iso + along * uz * uz;
-                xy += along * ux * uy;
-                xz += along * ux * uz;
-                yz += along * uy * uz;
-            }
+    const int cols = job.cols;
+    for (int c = 0; c < cols; ++c) {
+        const double m = job.mass_diagonal[base + c];
+        block[c] = m;
+        block[cols + c] = m;
+        block[2 * cols + c] = m;
+        block[3 * cols + c] = 0.0;
+        block[4 * cols + c] = 0.0;
+        block[5 * cols + c] = 0.0;
+    }
+    // The spring that starts here, then the one that ends here, direction by direction.
+    for (int k = 0; k < job.direction_count; ++k) {
+        const DirectionTerms& d = job.directions[k];
+        const std::ptrdiff_t o = static_cast<std::ptrdiff_t>(d.row_step) * cols + d.col_step;
+        for (const std::ptrdiff_t start : {std::ptrdiff_t{0}, -o}) {
+            const std::size_t from =
+                static_cast<std::size_t>(static_cast<std::ptrdiff_t>(base) + start);
+            add_diagonal_terms(d.iso + from, d.along + from, d.ux + from, d.uy + from, d.uz + from,
+                               block, block + cols, block + 2 * cols, block + 3 * cols,
+                               block + 4 * cols, block + 5 * cols, cols);
         }
-        const double block[6] = {xx, yy, zz, xy, xz, yz};
-        for (int e = 0; e < 6; ++e) job.diagonal[e][i] = static_cast<float>(block[e]) * job.free[i];
+    }
+    const float* __restrict free = job.free + base;
+    for (int c = 0; c < cols; ++c) {
+        const double a[6] = {block[c],
+                             block[cols + c],
+                             block[2 * cols + c],
+                             block[3 * cols + c],
+                             block[4 * cols + c],
+                             block[5 * cols + c]};
         double inverse[6];
-        invert_symmetric_block(block, inverse);
-        for (int e = 0; e < 6; ++e)
-            job.inverse_diagonal[e][i] = static_cast<float>(inverse[e]) * job.free[i];
+        invert_symmetric_block(a, inverse);
+        for (int e = 0; e < 6; ++e) {
+            job.diagonal[e][base + c] = static_cast<float>(a[e]) * free[c];
+            job.inverse_diagonal[e][base + c] = static_cast<float>(inverse[e]) * free[c];
+        }
     }
 }
 
@@ -387,10 +418,12 @@ void restrict_if_pair_done(const Job& job, int row) {
 
 void residual_rows(const Job& job, int begin, int end, RowSums sums) {
     float* scratch = band_scratch(job.cols, 2);
+    thread_local std::vector<double> block;  // grown once: no step allocates
+    block.resize(6 * static_cast<std::size_t>(job.cols));
     BandProduct at_start(job, job.start, begin, scratch);
     BandProduct at_guess(job, job.solution, begin, scratch + BandProduct::scratch_floats(job.cols));
     for (int row = begin; row < end; ++row) {
-        diagonal_row(job, row);
+        diagonal_row(job, row, block.data());
         const std::size_t base = at(job, row);
         // |b - A v0|² first (the residual's scale), then r at the guess, over it.
         at_start.row(row, job.residual);

@@ -11,7 +11,10 @@ inline void invert_symmetric_block(const double* a, double* out) {
     const double c_xy = xz * yz - xy * zz;
     const double c_xz = xy * yz - xz * yy;
     const double determinant = xx * c_xx + xy * c_xy + xz * c_xz;
-    const double inverse = determinant > 0.0 ? 1.0 / determinant : 0.0;
+    // 1/det, or 0, without a branch (so loops of inverses vectorise): a singular block
+    // divides 0 by 1.
+    const double invertible = determinant > 0.0 ? 1.0 : 0.0;
+    const double inverse = invertible / (invertible * determinant + (1.0 - invertible));
     out[0] = c_xx * inverse;
     out[1] = (xx * zz - xz * xz) * inverse;
     out[2] = (xx * yy - xy * xy) * inverse;

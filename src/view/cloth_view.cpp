@@ -77,14 +77,12 @@ raster::MeshView ClothView::mesh() const {
 
 std::span<const raster::Rgba8> ClothView::spring_colours(const Cloth& cloth) {
     spring_line_colours_.resize(spring_lines_.size());
-    largest_strain_ = 0.0f;
     std::size_t line = 0;
     for (const SpringGroup& group : cloth.spring_groups) {
         for (const Spring& spring : group.springs) {
             const double length =
                 glm::length(cloth.positions[spring.j] - cloth.positions[spring.i]);
             const auto strain = static_cast<float>(length / spring.rest_length - 1.0);
-            largest_strain_ = std::max(largest_strain_, strain);
             spring_line_colours_[line++] = raster::to_rgba8(raster::colour_for_strain(strain));
         }
     }

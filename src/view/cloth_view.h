@@ -45,9 +45,6 @@ class ClothView {
     raster::TriangleBands& triangle_bands() { return triangle_bands_; }
     std::vector<raster::PreparedMesh>& collider_meshes() { return collider_meshes_; }
 
-    // Largest strain (|d|/L - 1) over all live springs at the last spring_colours() call.
-    float largest_strain() const { return largest_strain_; }
-
   private:
     void rebuild_topology(const Cloth& cloth);
 
@@ -63,7 +60,6 @@ class ClothView {
     std::vector<raster::Rgba8> spring_line_colours_;
     std::size_t spring_count_ = 0;
     std::size_t triangle_count_ = 0;
-    float largest_strain_ = 0.0f;
     raster::PreparedMesh prepared_mesh_;
     raster::TriangleBands triangle_bands_;
     std::vector<raster::PreparedMesh> collider_meshes_;

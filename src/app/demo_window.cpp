@@ -349,6 +349,7 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
 
     const double started = now_seconds();
     long long frames = 0;
+    long long frames_behind = 0;  // frames the step budget cut short (real time not kept)
     double total_sim_seconds = 0.0, total_raster_seconds = 0.0;
     double last = now_seconds();
     double seconds_per_step = 0.0;
@@ -408,6 +409,7 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
         stats.raster_seconds = now_seconds() - raster_start;
         ImGui_ImplSDLRenderer_RenderDrawData(ImGui::GetDrawData());
         ++frames;
+        if (plan.behind) ++frames_behind;
         total_sim_seconds += stats.sim_seconds;
         total_raster_seconds += stats.raster_seconds;
         if (w.save_window_next_frame) {
@@ -420,10 +422,11 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
     const double seconds = now_seconds() - started;
     if (frames > 0)
         std::printf(
-            "%lld frames in %.1f s: %.1f fps, %.2f ms stepping and %.2f ms drawing per frame\n",
+            "%lld frames in %.1f s: %.1f fps, %.2f ms stepping and %.2f ms drawing per frame; "
+            "%lld behind real time\n",
             frames, seconds, static_cast<double>(frames) / seconds,
             1e3 * total_sim_seconds / static_cast<double>(frames),
-            1e3 * total_raster_seconds / static_cast<double>(frames));
+            1e3 * total_raster_seconds / static_cast<double>(frames), frames_behind);
     if (command_line.record_path && state.recording) {
         std::string error;
         if (write_file_atomically(*command_line.record_path,

@@ -16,7 +16,10 @@ namespace weft::implicit_kernel {
 inline constexpr int max_directions = 6;
 
 // One stencil direction's share of h² K + h C, per start particle p (the spring from p to
-// p + offset): the block iso I + along u uᵀ. Zero where no live spring starts.
+// p + offset): the block iso I + along u uᵀ, stored as iso and the axial vector
+// a = √along u (along ≥ 0: the transverse term never exceeds k), so that along u uᵀ = a aᵀ:
+// four floats a spring instead of five, for a product that streams them from memory every
+// iteration. Zero where no live spring starts.
 struct DirectionTerms {
     int row_step = 0;            // dr
     int col_step = 0;            // dc
@@ -24,10 +27,9 @@ struct DirectionTerms {
     double damping = 0.0;        // N·s/m
     const double* rest_lengths;  // m, per start particle, unpadded; negative: no spring
     float* iso;                  // kg: h² k max(0, 1 - L/l), padded
-    float* along;                // kg: h² (k - that) + h c, padded
-    float* ux;                   // u = (x_j - x_i) / |x_j - x_i|, padded
-    float* uy;
-    float* uz;
+    float* axial_x;              // √kg: √(h² (k - k max(0, 1 - L/l)) + h c) u, padded
+    float* axial_y;
+    float* axial_z;
 };
 
 // Three padded components.

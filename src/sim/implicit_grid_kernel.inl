@@ -11,8 +11,8 @@
 // Gather formulation, as in the force pass: for every direction k (offset o_k) and particle
 // p, the spring from p to p + o_k contributes B_k[p] (v_p - v_{p+o_k}) to (A v)_p and the
 // spring from p - o_k to p contributes B_k[p - o_k] (v_p - v_{p-o_k}), with the block
-// B = iso I + along u uᵀ stored per start particle (zero where no live spring starts). Every
-// particle's sum is taken in the same order whatever the rows a thread owns, so the product
+// B = iso I + a aᵀ (a = √along u) stored per start particle (zero where no live spring starts).
+// Every particle's sum is taken in the same order whatever the rows a thread owns, so the product
 // is the same bit for bit for any split; sums over particles are taken per row in sixteen
 // fixed lanes and then row by row, so they are too, and for every vector width.
 
@@ -46,19 +46,18 @@ double row_dot(const Field3& a, const Field3& b, std::size_t begin, int cols) {
 }
 
 // The spring term of one direction over a row: w[p] = B[p] (v_p - v_{p+o}) for the spring
-// that starts at each particle p (zero where none does: its block is zero). Every stream is
-// its own restrict pointer, so the loop vectorises.
-void flux_row(const float* __restrict iso, const float* __restrict along,
-              const float* __restrict ux, const float* __restrict uy, const float* __restrict uz,
-              const float* __restrict x, const float* __restrict y, const float* __restrict z,
-              std::ptrdiff_t o, float* __restrict wx, float* __restrict wy, float* __restrict wz,
-              int cols) {
+// that starts at each particle p (zero where none does: its block is zero), B = iso I + a aᵀ.
+// Every stream is its own restrict pointer, so the loop vectorises.
+void flux_row(const float* __restrict iso, const float* __restrict ax, const float* __restrict ay,
+              const float* __restrict az, const float* __restrict x, const float* __restrict y,
+              const float* __restrict z, std::ptrdiff_t o, float* __restrict wx,
+              float* __restrict wy, float* __restrict wz, int cols) {
     for (int c = 0; c < cols; ++c) {
         const float fx = x[c] - x[c + o], fy = y[c] - y[c + o], fz = z[c] - z[c + o];
-        const float f_along = along[c] * (ux[c] * fx + uy[c] * fy + uz[c] * fz);
-        wx[c] = iso[c] * fx + f_along * ux[c];
-        wy[c] = iso[c] * fy + f_along * uy[c];
-        wz[c] = iso[c] * fz + f_along * uz[c];
+        const float f_axial = ax[c] * fx + ay[c] * fy + az[c] * fz;
+        wx[c] = iso[c] * fx + f_axial * ax[c];
+        wy[c] = iso[c] * fy + f_axial * ay[c];
+        wz[c] = iso[c] * fz + f_axial * az[c];
     }
 }
 
@@ -160,7 +159,7 @@ class BandProduct {
             const std::ptrdiff_t o =
                 static_cast<std::ptrdiff_t>(d.row_step) * job_.cols + d.col_step;
             float* w = flux(k, row);
-            flux_row(d.iso + base, d.along + base, d.ux + base, d.uy + base, d.uz + base,
+            flux_row(d.iso + base, d.axial_x + base, d.axial_y + base, d.axial_z + base,
                      v_.x + base, v_.y + base, v_.z + base, o, w, w + padded_, w + 2 * padded_,
                      job_.cols);
         }
@@ -214,8 +213,8 @@ void spring_terms_row(const double* __restrict rest, const double* __restrict hx
                       const double* __restrict hy, const double* __restrict hz,
                       const double* __restrict tx, const double* __restrict ty,
                       const double* __restrict tz, double stiffness, double damping, double h,
-                      float* __restrict iso, float* __restrict along, float* __restrict ux,
-                      float* __restrict uy, float* __restrict uz, int cols) {
+                      float* __restrict iso, float* __restrict ax, float* __restrict ay,
+                      float* __restrict az, int cols) {
     for (int c = 0; c < cols; ++c) {
         const double rest_length = rest[c];
         const double ex = tx[c] - hx[c], ey = ty[c] - hy[c], ez = tz[c] - hz[c];
@@ -231,10 +230,12 @@ void spring_terms_row(const double* __restrict rest, const double* __restrict hx
         const double stretch = 1.0 - rest_length * inverse_length;
         const double transverse = stiffness * (stretch > 0.0 ? stretch : 0.0);
         iso[c] = static_cast<float>(live * (h * h * transverse));
-        along[c] = static_cast<float>(live * (h * h * (stiffness - transverse) + h * damping));
-        ux[c] = static_cast<float>(ex * inverse_length);
-        uy[c] = static_cast<float>(ey * inverse_length);
-        uz[c] = static_cast<float>(ez * inverse_length);
+        // along = h² (k - transverse) + h c >= 0 (transverse <= k); a = √along u.
+        const double along = live * (h * h * (stiffness - transverse) + h * damping);
+        const double axial = std::sqrt(along > 0.0 ? along : 0.0) * inverse_length;
+        ax[c] = static_cast<float>(ex * axial);
+        ay[c] = static_cast<float>(ey * axial);
+        az[c] = static_cast<float>(ez * axial);
     }
 }
 
@@ -266,18 +267,17 @@ void setup_rows(const Job& job, int begin, int end, double warm_start) {
         for (int k = 0; k < job.direction_count; ++k) {
             const DirectionTerms& d = job.directions[k];
             float* __restrict iso = d.iso + base;
-            float* __restrict along = d.along + base;
-            float* __restrict ux = d.ux + base;
-            float* __restrict uy = d.uy + base;
-            float* __restrict uz = d.uz + base;
+            float* __restrict ax = d.axial_x + base;
+            float* __restrict ay = d.axial_y + base;
+            float* __restrict az = d.axial_z + base;
             if (row + d.row_step >= job.rows) {  // no spring of this direction starts here
-                for (float* terms : {iso, along, ux, uy, uz}) std::fill(terms, terms + cols, 0.0f);
+                for (float* terms : {iso, ax, ay, az}) std::fill(terms, terms + cols, 0.0f);
                 continue;
             }
             const double* there = ring_row(row + d.row_step) + d.col_step;
             spring_terms_row(d.rest_lengths + first, here, here + padded, here + 2 * padded, there,
-                             there + padded, there + 2 * padded, d.stiffness, d.damping, h, iso,
-                             along, ux, uy, uz, cols);
+                             there + padded, there + 2 * padded, d.stiffness, d.damping, h, iso, ax,
+                             ay, az, cols);
         }
         // b, v0, the guess, the mass diagonal and the free mask.
         for (int c = 0; c < cols; ++c) {
@@ -303,22 +303,22 @@ void setup_rows(const Job& job, int begin, int end, double warm_start) {
     }
 }
 
-// Adds the diagonal share of one direction's blocks, iso I + along u uᵀ, over a row into
-// six per-component double accumulators (each its own restrict parameter, so it vectorises).
-void add_diagonal_terms(const float* __restrict iso, const float* __restrict along,
-                        const float* __restrict ux, const float* __restrict uy,
-                        const float* __restrict uz, double* __restrict xx, double* __restrict yy,
-                        double* __restrict zz, double* __restrict xy, double* __restrict xz,
-                        double* __restrict yz, int cols) {
+// Adds the diagonal share of one direction's blocks, iso I + a aᵀ, over a row into six
+// per-component double accumulators (each its own restrict parameter, so it vectorises).
+void add_diagonal_terms(const float* __restrict iso, const float* __restrict ax,
+                        const float* __restrict ay, const float* __restrict az,
+                        double* __restrict xx, double* __restrict yy, double* __restrict zz,
+                        double* __restrict xy, double* __restrict xz, double* __restrict yz,
+                        int cols) {
     for (int c = 0; c < cols; ++c) {
-        const double i = iso[c], a = along[c];
-        const double x = ux[c], y = uy[c], z = uz[c];
-        xx[c] += i + a * x * x;
-        yy[c] += i + a * y * y;
-        zz[c] += i + a * z * z;
-        xy[c] += a * x * y;
-        xz[c] += a * x * z;
-        yz[c] += a * y * z;
+        const double i = iso[c];
+        const double x = ax[c], y = ay[c], z = az[c];
+        xx[c] += i + x * x;
+        yy[c] += i + y * y;
+        zz[c] += i + z * z;
+        xy[c] += x * y;
+        xz[c] += x * z;
+        yz[c] += y * z;
     }
 }
 
@@ -344,7 +344,7 @@ void diagonal_row(const Job& job, int row, double* __restrict block) {
         for (const std::ptrdiff_t start : {std::ptrdiff_t{0}, -o}) {
             const std::size_t from =
                 static_cast<std::size_t>(static_cast<std::ptrdiff_t>(base) + start);
-            add_diagonal_terms(d.iso + from, d.along + from, d.ux + from, d.uy + from, d.uz + from,
+            add_diagonal_terms(d.iso + from, d.axial_x + from, d.axial_y + from, d.axial_z + from,
                                block, block + cols, block + 2 * cols, block + 3 * cols,
                                block + 4 * cols, block + 5 * cols, cols);
         }

@@ -58,7 +58,7 @@ void ImplicitGridSolver::prepare(int grid_rows, int grid_cols) {
     // Two rows and two columns either way, rounded to whole vectors of sixteen floats.
     pad = (2 * static_cast<std::size_t>(cols) + 2 + 15) / 16 * 16;
     stride = (count + 2 * pad + 15) / 16 * 16;
-    constexpr int arrays = 5 * implicit_kernel::max_directions + 2 + 6 + 6 + 9 * 3;
+    constexpr int arrays = 4 * implicit_kernel::max_directions + 2 + 6 + 6 + 9 * 3;
     storage.assign(stride * arrays, 0.0f);
     row_sums.assign(3 * static_cast<std::size_t>(rows), 0.0);
     static_forces.assign(count, Vec3(0.0));
@@ -104,10 +104,9 @@ void ImplicitGridSolver::bind() {
     job.pad = pad;
     for (implicit_kernel::DirectionTerms& d : job.directions) {
         d.iso = take();
-        d.along = take();
-        d.ux = take();
-        d.uy = take();
-        d.uz = take();
+        d.axial_x = take();
+        d.axial_y = take();
+        d.axial_z = take();
     }
     job.mass_diagonal = take();
     job.free = take();
@@ -154,7 +153,8 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     // Directions the cloth no longer has must not leave old terms behind.
     for (int k = job.direction_count; k < implicit_kernel::max_directions; ++k) {
         implicit_kernel::DirectionTerms& d = job.directions[k];
-        for (float* array : {d.iso, d.along}) std::fill(array, array + solver.stride, 0.0f);
+        for (float* array : {d.iso, d.axial_x, d.axial_y, d.axial_z})
+            std::fill(array, array + solver.stride, 0.0f);
     }
     job.positions = &cloth.positions.data()->x;
     job.velocities = &cloth.velocities.data()->x;

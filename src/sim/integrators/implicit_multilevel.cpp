@@ -71,31 +71,31 @@ void invert_level(ImplicitCoarseLevel& level) {
         invert_symmetric_block(&level.diagonal[6 * n], &level.inverse[6 * n]);
 }
 
-// The coupling blocks A_pq = -B, B = iso I + along u uᵀ, of one direction's springs that
-// start on fine row `row`, as six rows of `cols` floats (xx yy zz xy xz yz): zero where the
-// spring is missing or an end is pinned (the filtered system has no coupling there). Off the
-// grid, the padding's zero free mask does that; across a column edge, the zero terms.
+// The coupling blocks A_pq = -B, B = iso I + a aᵀ, of one direction's springs that start on
+// fine row `row`, as six rows of `cols` floats (xx yy zz xy xz yz): zero where the spring is
+// missing or an end is pinned (the filtered system has no coupling there). Off the grid, the
+// padding's zero free mask does that; across a column edge, the zero terms.
 void fine_couplings(const implicit_kernel::Job& job, const implicit_kernel::DirectionTerms& d,
                     int row, float* __restrict out) {
     const int cols = job.cols;
     const std::size_t base = job.pad + static_cast<std::size_t>(row) * cols;
     const std::ptrdiff_t o = static_cast<std::ptrdiff_t>(d.row_step) * cols + d.col_step;
     const float* __restrict iso = d.iso + base;
-    const float* __restrict along = d.along + base;
-    const float* __restrict ux = d.ux + base;
-    const float* __restrict uy = d.uy + base;
-    const float* __restrict uz = d.uz + base;
+    const float* __restrict ax = d.axial_x + base;
+    const float* __restrict ay = d.axial_y + base;
+    const float* __restrict az = d.axial_z + base;
     const float* __restrict free_here = job.free + base;
     const float* __restrict free_there = job.free + base + o;
     for (int c = 0; c < cols; ++c) {
         const float minus_mask = -(free_here[c] * free_there[c]);
-        const float a = minus_mask * along[c], i = minus_mask * iso[c];
-        out[c] = i + a * ux[c] * ux[c];
-        out[cols + c] = i + a * uy[c] * uy[c];
-        out[2 * cols + c] = i + a * uz[c] * uz[c];
-        out[3 * cols + c] = a * ux[c] * uy[c];
-        out[4 * cols + c] = a * ux[c] * uz[c];
-        out[5 * cols + c] = a * uy[c] * uz[c];
+        const float i = minus_mask * iso[c];
+        const float x = ax[c], y = ay[c], z = az[c];
+        out[c] = i + minus_mask * (x * x);
+        out[cols + c] = i + minus_mask * (y * y);
+        out[2 * cols + c] = i + minus_mask * (z * z);
+        out[3 * cols + c] = minus_mask * (x * y);
+        out[4 * cols + c] = minus_mask * (x * z);
+        out[5 * cols + c] = minus_mask * (y * z);
     }
 }
 

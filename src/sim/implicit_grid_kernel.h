@@ -88,6 +88,10 @@ struct RowSums {
     double* first = nullptr;
     double* second = nullptr;
     double* third = nullptr;
+    // The largest |P_J r|² of each row (P_J: the block-Jacobi part of the preconditioner), an
+    // estimate of the largest velocity error the solve leaves at a particle: a maximum, so it
+    // is exact whatever the order.
+    double* largest = nullptr;
 };
 
 // Pass 1, rows [begin, end): the direction terms of the springs that start on these rows,

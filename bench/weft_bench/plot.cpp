@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <sstream>
 
 #include <stb/stb_easy_font.h>
 
@@ -121,7 +122,111 @@ void fit_range(Axis& axis, const std::vector<double>& values) {
     }
 }
 
+// Each series' marker has its own shape (by its place in the plot), so a series can be
+// told by its markers where colours sit close or lines lie on top of each other.
+enum class Marker { square, circle, triangle, diamond };
+
+Marker marker_shape(int series_index) {
+    return static_cast<Marker>(series_index % 4);
+}
+
+// A filled marker of half-size `r` pixels centred on (x, y).
+void draw_marker(raster::Framebuffer& fb, double x, double y, int r, Marker shape,
+                 raster::Rgba8 colour) {
+    const int cx = static_cast<int>(std::lround(x)), cy = static_cast<int>(std::lround(y));
+    for (int dy = -r; dy <= r; ++dy) {
+        for (int dx = -r; dx <= r; ++dx) {
+            const bool inside = shape == Marker::square     ? true
+                                : shape == Marker::circle   ? dx * dx + dy * dy <= r * r
+                                : shape == Marker::triangle ? 2 * std::abs(dx) <= dy + r  // apex up
+                                                            : std::abs(dx) + std::abs(dy) <= r;
+            if (inside) fill_rect(fb, cx + dx, cy + dy, cx + dx + 1, cy + dy + 1, colour);
+        }
+    }
+}
+
+bool usable(const PlotPoint& p, const Axis& x_axis, const Axis& y_axis) {
+    return x_axis.usable(p.x) && y_axis.usable(p.y);
+}
+
+// Whether `later`, drawn over `earlier`, would hide it: the same points, each within a few
+// pixels of its partner on the page.
+bool hides(const PlotSeries& later, const PlotSeries& earlier, const Axis& x_axis,
+           const Axis& y_axis) {
+    if (later.points.size() != earlier.points.size()) return false;
+    constexpr double near = 3.0;  // px
+    bool any = false;
+    for (std::size_t k = 0; k < earlier.points.size(); ++k) {
+        const PlotPoint &a = earlier.points[k], &b = later.points[k];
+        const bool drawn = usable(a, x_axis, y_axis);
+        if (drawn != usable(b, x_axis, y_axis)) return false;
+        if (!drawn) continue;
+        if (std::abs(x_axis.map(a.x) - x_axis.map(b.x)) > near ||
+            std::abs(y_axis.map(a.y) - y_axis.map(b.y)) > near)
+            return false;
+        any = true;
+    }
+    return any;
+}
+
+// For each series, how many drawn after it would hide it: it is drawn that much wider (with
+// larger markers), so each shows as a band around the ones over it.
+std::vector<int> hidden_under(const std::vector<PlotSeries>& series, const Axis& x_axis,
+                              const Axis& y_axis) {
+    std::vector<int> count(series.size(), 0);
+    for (std::size_t i = 0; i < series.size(); ++i)
+        for (std::size_t j = i + 1; j < series.size(); ++j)
+            if (hides(series[j], series[i], x_axis, y_axis)) ++count[i];
+    return count;
+}
+
+// `note` broken at spaces into lines at most `widest` pixels wide (a longer word stays
+// whole); continuation lines keep the note's indent.
+std::vector<std::string> wrapped(const std::string& note, int widest) {
+    const std::size_t first = note.find_first_not_of(' ');
+    if (first == std::string::npos) return {note};
+    const std::string indent = note.substr(0, first);
+    std::vector<std::string> lines;
+    std::string line = indent;
+    std::istringstream words(note.substr(first));
+    std::string word;
+    while (words >> word) {
+        const bool empty = line.size() == indent.size();
+        const std::string longer = empty ? line + word : line + " " + word;
+        if (!empty && text_width(longer) > widest) {
+            lines.push_back(line);
+            line = indent + word;
+        } else {
+            line = longer;
+        }
+    }
+    lines.push_back(line);
+    return lines;
+}
+
+// The legend, right of the data area: a swatch (line and marker) and a label per series.
+constexpr int swatch_gap = 20;       // px from the data area to the swatch, and to the notes
+constexpr int label_offset = 58;     // px from the data area to a series' label
+constexpr int right_margin = 16;     // px right of the legend's longest line
+constexpr int widest_note = 420;     // px, about 35 characters, before a note wraps
+constexpr int narrowest_data = 560;  // px: the image widens rather than go below
+
 }  // namespace
+
+PlotLayout plot_layout(const PlotSpec& spec) {
+    PlotLayout layout{spec.width, spec.height, 110, 0, 70, spec.height - 70, {}};
+    int legend = 0;
+    for (const PlotSeries& series : spec.series)
+        legend = std::max(legend, label_offset + text_width(series.label));
+    for (const std::string& note : spec.notes)
+        for (std::string& line : wrapped(note, widest_note)) {
+            legend = std::max(legend, swatch_gap + text_width(line));
+            layout.notes.push_back(std::move(line));
+        }
+    layout.width = std::max(spec.width, layout.left + narrowest_data + legend + right_margin);
+    layout.right = layout.width - legend - right_margin;
+    return layout;
+}
 
 raster::Rgba8 series_colour(int index) {
     static const raster::Rgba8 palette[] = {
@@ -130,17 +235,18 @@ raster::Rgba8 series_colour(int index) {
     return palette[index % 8];
 }
 
-bool write_plot_png(const PlotSpec& spec, const std::string& path, std::string* error) {
-    raster::Framebuffer fb(spec.width, spec.height);
+raster::Framebuffer render_plot(const PlotSpec& spec) {
+    const PlotLayout layout = plot_layout(spec);
+    raster::Framebuffer fb(layout.width, layout.height);
     const raster::Rgba8 white{255, 255, 255, 255}, black{20, 20, 20, 255}, grid{225, 225, 225, 255};
     fb.clear(white);
-    const int left = 110, right = spec.width - 330, top = 70, bottom = spec.height - 70;
+    const int left = layout.left, right = layout.right, top = layout.top, bottom = layout.bottom;
 
     Axis x_axis{spec.log_x, 0, 1, left, right}, y_axis{spec.log_y, 0, 1, bottom, top};
     std::vector<double> xs, ys;
     for (const PlotSeries& series : spec.series)
         for (const PlotPoint& p : series.points)
-            if (x_axis.usable(p.x) && y_axis.usable(p.y)) xs.push_back(p.x), ys.push_back(p.y);
+            if (usable(p, x_axis, y_axis)) xs.push_back(p.x), ys.push_back(p.y);
     fit_range(x_axis, xs);
     fit_range(y_axis, ys);
 
@@ -163,33 +269,45 @@ bool write_plot_png(const PlotSpec& spec, const std::string& path, std::string* 
               black);
     draw_text(fb, 8, top - 32, spec.y_label, black);
 
+    const std::vector<int> under = hidden_under(spec.series, x_axis, y_axis);
     int legend_y = top;
-    for (const PlotSeries& series : spec.series) {
+    for (std::size_t s = 0; s < spec.series.size(); ++s) {
+        const PlotSeries& series = spec.series[s];
+        const Marker shape = marker_shape(static_cast<int>(s));
+        const int line_width = 2 + 3 * under[s];
+        const int marker_size = 4 + 2 * under[s];
         bool have_previous = false;
         double px = 0, py = 0;
         for (const PlotPoint& p : series.points) {
-            if (!x_axis.usable(p.x) || !y_axis.usable(p.y)) {
+            if (!usable(p, x_axis, y_axis)) {
                 have_previous = false;  // a missing point breaks the line
                 continue;
             }
             const double x = x_axis.map(p.x), y = y_axis.map(p.y);
-            if (have_previous) draw_line(fb, px, py, x, y, series.colour, series.dashed);
-            if (series.markers)
-                fill_rect(fb, static_cast<int>(x) - 4, static_cast<int>(y) - 4,
-                          static_cast<int>(x) + 5, static_cast<int>(y) + 5, series.colour);
+            if (have_previous)
+                draw_line(fb, px, py, x, y, series.colour, series.dashed, line_width);
+            if (series.markers) draw_marker(fb, x, y, marker_size, shape, series.colour);
             px = x, py = y, have_previous = true;
         }
-        draw_line(fb, right + 20, legend_y + 7, right + 50, legend_y + 7, series.colour,
+        const int swatch_left = right + swatch_gap, swatch_right = right + label_offset - 8;
+        draw_line(fb, swatch_left, legend_y + 7, swatch_right, legend_y + 7, series.colour,
                   series.dashed);
-        draw_text(fb, right + 58, legend_y, series.label, black);
+        if (series.markers)
+            draw_marker(fb, 0.5 * (swatch_left + swatch_right), legend_y + 7, 4, shape,
+                        series.colour);
+        draw_text(fb, right + label_offset, legend_y, series.label, black);
         legend_y += 22;
     }
-    for (const std::string& note : spec.notes) {
+    for (const std::string& note : layout.notes) {
         legend_y += 6;
-        draw_text(fb, right + 20, legend_y, note, black);
+        draw_text(fb, right + swatch_gap, legend_y, note, black);
         legend_y += 16;
     }
-    return raster::write_png(fb, path, error);
+    return fb;
+}
+
+bool write_plot_png(const PlotSpec& spec, const std::string& path, std::string* error) {
+    return raster::write_png(render_plot(spec), path, error);
 }
 
 }  // namespace weft::bench

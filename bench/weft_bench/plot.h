@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "raster/colour.h"
+#include "raster/framebuffer.h"
 
 namespace weft::bench {
 
@@ -31,9 +32,25 @@ struct PlotSpec {
     bool log_y = true;
     std::vector<PlotSeries> series;
     std::vector<std::string> notes;  // extra lines under the legend (e.g. "x: diverged")
-    int width = 1100;                // pixels
+    int width = 1100;                // pixels: the least; a wide legend widens the image
     int height = 680;
 };
+
+// Where a plot's parts go, in pixels. The legend's column, right of the data area, is as wide
+// as its longest line (long notes wrap), so no label is cut at the image's edge; the image
+// widens rather than squeeze the data area below a readable width.
+struct PlotLayout {
+    int width, height;               // the image
+    int left, right, top, bottom;    // the data area
+    std::vector<std::string> notes;  // spec.notes, wrapped to the legend's column
+};
+PlotLayout plot_layout(const PlotSpec& spec);
+
+// The plot as an image. Series that coincide on the page (a later one over an earlier one,
+// point for point, as three integrators with the same stability limit do) stay visible: the
+// one drawn first is drawn wider and with larger markers, so it shows as a band around the
+// next; and each series has its own marker shape, in the legend as on the lines.
+raster::Framebuffer render_plot(const PlotSpec& spec);
 
 // Writes the plot; false with `error` set if the file cannot be written.
 bool write_plot_png(const PlotSpec& spec, const std::string& path, std::string* error);

@@ -1,5 +1,5 @@
 // Table of contents: controls table · statistics · solver · materials · forces · tearing and
-// limits · view · scenes · overlays.
+// limits · view · scenes · help overlay.
 #include "app/control_panel.h"
 
 #include <imgui.h>
@@ -454,24 +454,6 @@ void draw_help_overlay(bool& open) {
         }
         ImGui::EndTable();
     }
-    ImGui::End();
-}
-
-void draw_status_overlay(const DemoState& state, double now_seconds) {
-    const bool show_message = now_seconds < state.message_until && !state.message.empty();
-    if (!show_message && !state.statistics.behind && !state.paused) return;
-    const ImVec2 size = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(size.x * 0.5f, size.y - 10.0f), ImGuiCond_Always,
-                            ImVec2(0.5f, 1.0f));
-    ImGui::SetNextWindowBgAlpha(0.6f);
-    ImGui::Begin("status", nullptr,
-                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
-                     ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoFocusOnAppearing);
-    if (state.paused) ImGui::TextUnformatted("paused (P resumes, N steps)");
-    if (state.statistics.behind)
-        ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1),
-                           "falling behind real time: simulating slower than the clock");
-    if (show_message) ImGui::TextColored(ImVec4(1, 0.5f, 0.3f, 1), "%s", state.message.c_str());
     ImGui::End();
 }
 

@@ -1,5 +1,6 @@
 // The parameter panel (Dear ImGui): every scene parameter live, the scene picker, view
 // toggles and the statistics; and the help overlay. Draws into the current ImGui frame.
+// (The status lines over the view are status_overlay.h's.)
 #pragma once
 
 #include "app/demo_state.h"
@@ -8,7 +9,6 @@ namespace weft::app {
 
 void draw_control_panel(DemoState& state);
 void draw_help_overlay(bool& open);
-void draw_status_overlay(const DemoState& state, double now_seconds);
 
 // Every key and mouse action, for the help overlay and the README.
 extern const char* const controls_text[][2];

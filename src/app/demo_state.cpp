@@ -9,6 +9,7 @@
 
 #include "app/atomic_file.h"
 #include "app/hand_tools.h"
+#include "sim/energy.h"
 #include "sim/scene_loader.h"
 #include "sim/scene_writer.h"
 #include "sim/state_hash.h"
@@ -67,10 +68,20 @@ void DemoState::replace_simulation(const Scene& new_scene) {
     after_new_state();
 }
 
-void DemoState::say(const std::string& text) {
+void DemoState::say(const std::string& text, Tone tone) {
     message = text;
+    message_tone = tone;
     message_until = wall_now + 4.0;
     std::fprintf(stderr, "%s\n", text.c_str());
+}
+
+void DemoState::sample_energy(int steps) {
+    if (steps <= 0) return;
+    constexpr std::size_t samples_kept = 300;  // five seconds at 60 frames a second
+    std::vector<float>& energy = statistics.energy;
+    energy.push_back(
+        static_cast<float>(measure_energy(simulation.cloth(), simulation.force_field()).total()));
+    if (energy.size() > samples_kept) energy.erase(energy.begin());
 }
 
 // ---- stepping with recovery -----------------------------------------------------------------
@@ -122,8 +133,8 @@ bool Recovery::step(Simulation& simulation, double chosen_dt, std::string& messa
         simulation.set_dt(chosen_dt);
         forget();
         std::snprintf(text, sizeof text,
-                      "diverged at t=%.3f s: %s — no step above %.0e s holds these parameters; "
-                      "restarted the scene at dt %.3g ms",
+                      "diverged at t=%.3f s: %s; no step above %.0e s holds these parameters, "
+                      "so the scene restarted at dt %.3g ms",
                       diverged_at, report.divergence->c_str(), smallest_recovery_dt,
                       chosen_dt * 1e3);
     } else {
@@ -135,7 +146,7 @@ bool Recovery::step(Simulation& simulation, double chosen_dt, std::string& messa
         }
         simulation.set_dt(halved_dt);
         std::snprintf(text, sizeof text,
-                      "diverged at t=%.3f s: %s — rolled back to t=%.3f s, dt halved to %.3g ms",
+                      "diverged at t=%.3f s: %s; rolled back to t=%.3f s, dt halved to %.3g ms",
                       diverged_at, report.divergence->c_str(), simulation.time(), halved_dt * 1e3);
     }
     simulation.end_drag();
@@ -171,7 +182,8 @@ int DemoState::step(int steps) {
                 const bool companion_sound = companion.recovery.step(
                     companion.simulation, companion.restart_dt, companion_why);
                 if (!companion_why.empty()) {
-                    say("copy " + std::to_string(c + 1) + ": " + companion_why);
+                    say("copy " + std::to_string(c + 1) + ": " + companion_why,
+                        companion_sound ? Tone::info : Tone::problem);
                     companion_why.clear();
                 }
                 if (!companion_sound) {
@@ -184,11 +196,11 @@ int DemoState::step(int steps) {
         }
         apply_due_events();
         // The main run speaks last, so its message is the one on screen.
-        if (sound && !why.empty()) say(why);  // dt grew back
+        if (sound && !why.empty()) say(why, Tone::info);  // dt grew back
         if (!sound) {
             hand.dragging = false;
             cloth_view = view::ClothView(simulation.cloth());
-            say(why);
+            say(why, Tone::problem);
             return s;
         }
     }
@@ -434,7 +446,7 @@ SessionRecord DemoState::stop_recording() {
 void DemoState::start_replay(const SessionRecord& record) {
     SceneLoadResult loaded = load_scene_text(record.scene_toml, "recorded scene");
     if (!loaded.ok()) {
-        say("cannot replay: " + loaded.error->message());
+        say("cannot replay: " + loaded.error->message(), Tone::problem);
         return;
     }
     recording.reset();

@@ -29,8 +29,12 @@ struct DemoStatistics {
     double raster_seconds = 0.0;  // drawing in the last frame
     int steps = 0;                // steps in the last frame
     bool behind = false;          // the step budget cut the last frame short
-    std::vector<float> energy;    // J, total energy, one entry per frame, the last few seconds
+    std::vector<float> energy;    // J, total energy, one entry per frame that stepped
 };
+
+// How a message on screen reads at a glance, by its colour: news that something worked must
+// not look like an error.
+enum class Tone { info, success, problem };
 
 // What the mouse and the space bar are doing to the cloth.
 struct Hand {
@@ -129,7 +133,8 @@ struct DemoState {
     std::optional<SessionRecord> replaying;  // while replaying; events are consumed in order
     std::size_t replay_next = 0;             // the next event of `replaying` to apply
 
-    std::string message;         // shown on screen for a few seconds
+    std::string message;  // shown on screen for a few seconds
+    Tone message_tone = Tone::info;
     double message_until = 0.0;  // wall clock s
     double wall_now = 0.0;       // wall clock s, set by the window every frame
     DemoStatistics statistics;
@@ -199,7 +204,12 @@ struct DemoState {
     bool replay_matches() const;
     void stop_replay();  // back to the hand, from wherever the replay got to
 
-    void say(const std::string& text);  // a message on screen (and on stderr)
+    void say(const std::string& text, Tone tone);  // a message on screen (and on stderr)
+
+    // One sample of the energy plot for a frame that took `steps` steps, measured from the
+    // main run; none for a frame that took none, so the plot holds still while paused
+    // instead of scrolling a flat line through time that did not pass.
+    void sample_energy(int steps);
 
   private:
     void perform(const ClothEvent& event);  // record it, then apply it to every run

@@ -17,10 +17,12 @@
 #include "app/demo_state.h"
 #include "app/hand_tools.h"
 #include "app/headless_runner.h"
+#include "app/screen_layout.h"
 #include "app/screenshot_names.h"
 #include "app/session_record.h"
 #include "app/side_by_side.h"
 #include "app/state_dump.h"
+#include "app/status_overlay.h"
 #include "app/status_text.h"
 #include "raster/png_writer.h"
 #include "sim/energy.h"
@@ -56,7 +58,7 @@ void save_window_screenshot(DemoState& state, Window& w) {
                              std::min(height, raster::Framebuffer::max_side));
     if (SDL_RenderReadPixels(w.renderer, nullptr, SDL_PIXELFORMAT_ABGR8888, shot.colours().data(),
                              shot.width() * 4) != 0) {
-        state.say(std::string("window screenshot failed: ") + SDL_GetError());
+        state.say(std::string("window screenshot failed: ") + SDL_GetError(), Tone::problem);
         return;
     }
     const std::string path = next_screenshot_path(".");
@@ -65,7 +67,7 @@ void save_window_screenshot(DemoState& state, Window& w) {
         std::printf("screenshot: %s\n", path.c_str());
         std::fflush(stdout);
     } else {
-        state.say("screenshot failed: " + error);
+        state.say("screenshot failed: " + error, Tone::problem);
     }
 }
 
@@ -83,9 +85,9 @@ void save_screenshot(DemoState& state, const Window& w) {
     if (raster::write_png(w.framebuffer, path, &error)) {
         std::printf("screenshot: %s\n", path.c_str());
         std::fflush(stdout);
-        state.say("saved " + path);
+        state.say("saved " + path, Tone::success);
     } else {
-        state.say("screenshot failed: " + error);
+        state.say("screenshot failed: " + error, Tone::problem);
     }
 }
 
@@ -115,17 +117,20 @@ glm::vec2 hand_point(const DemoState& state, const Window& w) {
 void toggle_recording(DemoState& state) {
     if (!state.recording) {
         state.start_recording();
-        state.say("recording: the scene restarted; F5 again stops and saves");
+        state.say("recording: the scene restarted; F5 again stops and saves", Tone::info);
         return;
     }
     const SessionRecord record = state.stop_recording();
     const std::string path = next_free_path(".", "weft-session", "toml");
     std::string error;
     if (write_file_atomically(path, session_to_toml(record), false, error))
-        state.say("saved the session (" + std::to_string(record.events.size()) + " events, " +
-                  std::to_string(record.steps) + " steps) to " + path + "; weft --replay " + path);
+        state.say("saved the session (" +
+                      counted(static_cast<long long>(record.events.size()), "event", "events") +
+                      ", " + counted(static_cast<long long>(record.steps), "step", "steps") +
+                      ") to " + path + "; weft --replay " + path,
+                  Tone::success);
     else
-        state.say("could not save the session: " + error);
+        state.say("could not save the session: " + error, Tone::problem);
 }
 
 // Returns false when the user quits.
@@ -299,6 +304,19 @@ void draw_run_labels(const DemoState& state, const Window& w) {
     }
 }
 
+// The part of the window the panel leaves free, for the status lines. Begin on a window
+// already begun this frame appends to it: Dear ImGui's public way to ask where the panel
+// (control_panel.cpp's window "weft") is.
+ScreenRect area_beside_the_panel() {
+    ImGui::Begin("weft");
+    const ImVec2 position = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    ImGui::End();
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    constexpr float narrowest = 240.0f;  // px: about thirty characters a line
+    return area_beside_panel({0.0f, 0.0f, display.x, display.y},
+                             {position.x, position.y, size.x, size.y}, narrowest);
+}
+
 }  // namespace
 
 int run_demo_window(const CommandLine& command_line, const char* default_scene_path) {
@@ -378,9 +396,12 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
         const int steps = state.step(plan.steps);
         const double sim_seconds = now_seconds() - sim_start;
         if (state.replay_finished()) {
-            state.say(state.replay_matches()
-                          ? "replay finished: the state is bit for bit the recorded one"
-                          : "replay finished: the state DIFFERS from the recorded one");
+            if (state.replay_matches())
+                state.say("replay finished: the state is bit for bit the recorded one",
+                          Tone::success);
+            else
+                state.say("replay finished: the state DIFFERS from the recorded one",
+                          Tone::problem);
             state.stop_replay();
         }
         if (steps > 0) seconds_per_step = sim_seconds / steps;
@@ -389,16 +410,14 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
         stats.behind = plan.behind;
         stats.sim_seconds = sim_seconds;
         stats.frame_seconds = elapsed;
-        stats.energy.push_back(static_cast<float>(
-            measure_energy(state.simulation.cloth(), state.simulation.force_field()).total()));
-        if (stats.energy.size() > 300) stats.energy.erase(stats.energy.begin());
+        state.sample_energy(steps);
 
         ImGui_ImplSDLRenderer_NewFrame();
         ImGui_ImplSDL2_NewFrame();
         ImGui::NewFrame();
         draw_control_panel(state);
         draw_help_overlay(state.show_help);
-        draw_status_overlay(state, now);
+        draw_status_overlay(state, now, area_beside_the_panel());
         draw_run_labels(state, w);
         ImGui::Render();
 

@@ -1,6 +1,8 @@
 #include "app/status_text.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <iterator>
 
 namespace weft::app {
 
@@ -21,6 +23,35 @@ std::optional<std::string> linear_solve_text(const Simulation& simulation) {
     // run's numbers), so there is nothing true to show yet.
     if (simulation.time() == 0.0) return std::string("solve: none yet");
     return linear_solve_text(simulation.last_linear_solve());
+}
+
+std::string ascii_text(std::string_view utf8) {
+    struct Spelling {
+        std::string_view sign, ascii;
+    };
+    static constexpr Spelling spellings[] = {
+        {"\u2014", "-"}, {"\u2013", "-"},   {"\u00d7", "x"},  {"\u00b2", "2"},    {"\u00b3", "3"},
+        {"\u00b7", "."}, {"\u2026", "..."}, {"\u0394", "d"},  {"\u00b0", " deg"}, {"\u2212", "-"},
+        {"\u2248", "~"}, {"\u2264", "<="},  {"\u2265", ">="},
+    };
+    std::string text;
+    text.reserve(utf8.size());
+    for (std::size_t at = 0; at < utf8.size();) {
+        if (static_cast<unsigned char>(utf8[at]) < 0x80) {  // ASCII: as it is
+            text += utf8[at++];
+            continue;
+        }
+        const auto spelled = std::find_if(
+            std::begin(spellings), std::end(spellings),
+            [&](const Spelling& s) { return utf8.substr(at, s.sign.size()) == s.sign; });
+        if (spelled == std::end(spellings)) {
+            text += utf8[at++];
+        } else {
+            text += spelled->ascii;
+            at += spelled->sign.size();
+        }
+    }
+    return text;
 }
 
 }  // namespace weft::app

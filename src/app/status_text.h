@@ -1,5 +1,6 @@
 // Short lines of text the demo and the command line show about a run: counts with their noun
-// in the right number, and implicit Euler's linear solve. SDL-free, so the wording is tested.
+// in the right number, implicit Euler's linear solve, and text as the window's font can draw
+// it. SDL-free, so the wording is tested.
 #pragma once
 
 #include <optional>
@@ -21,5 +22,10 @@ std::string linear_solve_text(const Simulation::LinearSolve& solve);
 // step, when there is no solve to report); nothing for the explicit integrators, which
 // solve no system.
 std::optional<std::string> linear_solve_text(const Simulation& simulation);
+
+// `utf8` with the signs weft's messages use spelled in ASCII ("—" as "-", "×" as "x", "²" as
+// "2", "·" as ".", "…" as "...", "Δ" as "d", "°" as " deg"): the window's font (Dear ImGui's
+// default, ProggyClean) has no glyph for them and would draw "?". Anything else is kept.
+std::string ascii_text(std::string_view utf8);
 
 }  // namespace weft::app

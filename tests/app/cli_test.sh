@@ -30,6 +30,10 @@ check "zero steps keeps the initial velocities" awk -F, 'NR > 1 && ($6 != 0 || $
 # Divergence: explicit Euler on the stiff sheet without damping blows up -> status 3.
 expect 3 '^diverged at t=[0-9.]+: ' -- --headless "$scenes/stiff_sheet.toml" --steps 1000 \
   --set solver.integrator=explicit-euler --set springs.structural.damping=0
+# Under the documented line, the same moment with its unit and place in the run (issue 18:
+# a bare "t=0.012000" left the reader to guess the unit).
+check "the divergence time is said in seconds, with its step" \
+  grep -Eq '^  that is [0-9.e+-]+ s of simulated time, in step [0-9]+ of 1000 \(dt [0-9.e+-]+ s\)$' "$work/err"
 # The same sheet with its own (stable) settings does not.
 expect 0 quiet -- --headless "$scenes/stiff_sheet.toml" --steps 1000
 

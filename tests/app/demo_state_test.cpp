@@ -6,6 +6,7 @@
 // ends with a finite state, diverged or not.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +16,7 @@
 
 #include "app/demo_state.h"
 #include "raster/framebuffer.h"
+#include "sim/energy.h"
 #include "sim/scene_loader.h"
 #include "sim/stability_limit.h"
 #include "sim/state_hash.h"
@@ -488,6 +490,65 @@ TEST(DemoState, ParametersThatCannotHoldTheChosenDtAreRetriedEverMoreRarely) {
     while (state.simulation.time() < from + 8.0) state.step(16);
     EXPECT_LE(state.recovery.recoveries - settled, 5);
     EXPECT_TRUE(finite_state(state.simulation.cloth()));
+}
+
+// ---- what the window says (issue 18, items 5 and 12) --------------------------------------------
+
+bool ascii_only(const std::string& text) {
+    return std::all_of(text.begin(), text.end(),
+                       [](char c) { return static_cast<unsigned char>(c) < 0x80; });
+}
+
+TEST(DemoState, ADivergenceIsSaidAsAProblemInTextTheWindowsFontDraws) {
+    DemoState state = demo();
+    ASSERT_FALSE(state.change({"cloth.particle_mass=0.0003"}));  // 1 ms is past its limit
+    for (int frame = 0; frame < 100 && state.recovery.recoveries == 0; ++frame) state.step(16);
+    ASSERT_GE(state.recovery.recoveries, 1);
+    EXPECT_NE(state.message.find("rolled back"), std::string::npos) << state.message;
+    EXPECT_EQ(state.message_tone, Tone::problem);
+    // The window's font has glyphs for ASCII only: an em dash was drawn as "?".
+    EXPECT_TRUE(ascii_only(state.message)) << state.message;
+
+    // Healing is news, not a problem.
+    ASSERT_FALSE(state.change({"cloth.particle_mass=0.01"}));
+    bool restored = false;
+    for (int frame = 0; frame < 200 && !restored; ++frame) {
+        state.step(16);
+        restored = state.message.find("dt restored") != std::string::npos;
+    }
+    ASSERT_TRUE(restored);
+    EXPECT_EQ(state.message_tone, Tone::info);
+}
+
+TEST(DemoState, HopelessParametersAreSaidInTextTheWindowsFontDraws) {
+    DemoState state = demo();
+    ASSERT_FALSE(
+        state.change({"springs.structural.stiffness=1e300", "cloth.particle_mass=1e-300"}));
+    for (int frame = 0; frame < 200 && state.message.find("restarted") == std::string::npos;
+         ++frame)
+        state.step(50);
+    ASSERT_NE(state.message.find("restarted"), std::string::npos);
+    EXPECT_EQ(state.message_tone, Tone::problem);
+    EXPECT_TRUE(ascii_only(state.message)) << state.message;
+}
+
+TEST(DemoState, TheEnergyPlotHoldsStillWhilePaused) {
+    DemoState state = demo();
+    state.sample_energy(state.step(5));
+    ASSERT_EQ(state.statistics.energy.size(), 1u);
+    // Paused: frames take no steps, and the plot gains nothing (it used to scroll).
+    for (int frame = 0; frame < 50; ++frame) state.sample_energy(state.step(0));
+    EXPECT_EQ(state.statistics.energy.size(), 1u);
+    // A single step (N) is one sample, of the state after it.
+    state.sample_energy(state.step(1));
+    ASSERT_EQ(state.statistics.energy.size(), 2u);
+    EXPECT_EQ(
+        state.statistics.energy.back(),
+        static_cast<float>(
+            measure_energy(state.simulation.cloth(), state.simulation.force_field()).total()));
+    // Running: a sample a frame, the last five seconds' worth at 60 frames a second.
+    for (int frame = 0; frame < 400; ++frame) state.sample_energy(state.step(1));
+    EXPECT_EQ(state.statistics.energy.size(), 300u);
 }
 
 }  // namespace

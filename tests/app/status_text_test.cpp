@@ -23,6 +23,17 @@ TEST(StatusText, LinearSolveShowsIterationsAndTheResidualToTwoDigits) {
     EXPECT_EQ(linear_solve_text({0, 0.0}), "solve: 0 iterations, residual 0.0e+00");
 }
 
+TEST(StatusText, SignsTheWindowsFontLacksAreSpelledInAscii) {
+    // The font draws "?" for these (issue 18, item 5: "diverged ... ? rolled back").
+    EXPECT_EQ(ascii_text("a \u2014 b"), "a - b");
+    EXPECT_EQ(ascii_text("rows \u00d7 cols = 5\u00b7m/s\u00b2"), "rows x cols = 5.m/s2");
+    EXPECT_EQ(ascii_text("\u0394v at 45\u00b0\u2026"), "dv at 45 deg...");
+    EXPECT_EQ(ascii_text("plain ASCII stays as it is: ~!@#"), "plain ASCII stays as it is: ~!@#");
+    EXPECT_EQ(ascii_text(""), "");
+    // A character outside the list is kept: the font's own fallback is no worse than a guess.
+    EXPECT_EQ(ascii_text("caf\u00e9"), "caf\u00e9");
+}
+
 Scene small_sheet(Integrator integrator) {
     Scene scene;
     scene.cloth.rows = 4;

@@ -5,12 +5,16 @@
 #      the window closes, while still held, against an undisturbed run);
 #   3. space + mouse on empty background leaves the cloth as an undisturbed run leaves it;
 #   4. side by side (--compare rk4) one drag moves both runs' columns, and the session it
-#      recorded (--record) replays headless to the same state bit for bit.
-# Usage: window_e2e_test.sh WEFT PNG_DIFF SOURCE_DIR
+#      recorded (--record) replays headless to the same state bit for bit;
+#   5. what the window says, read off window screenshots (Shift+F12): a saved screenshot is
+#      said in the success colour, a divergence in the problem colour and wrapped beside the
+#      panel, and a red REC shows while recording.
+# Usage: window_e2e_test.sh WEFT PNG_DIFF SOURCE_DIR PNG_COLOUR_COUNT
 set -uo pipefail
 weft=$(realpath "$1")
 png_diff=$(realpath "$2")
 scene=$(realpath "$3")/tests/app/e2e_sheet.toml
+png_colour_count=$(realpath "$4")
 for tool in Xvfb xdotool; do
   command -v "$tool" >/dev/null || { echo "FAIL: $tool is missing (scripts/setup.sh installs it)"; exit 1; }
 done
@@ -161,6 +165,61 @@ check awk -v a="$implicit_rest_x" -v b="$implicit_held_x" 'BEGIN { exit !(b - a 
 check test "$(grep -c "diverged" "$work/implicit/out.log")" -eq 0
 check awk -F, 'NR > 1 { for (i = 3; i <= 8; ++i) if ($i != $i + 0 || $i > 10 || $i < -10) exit 1 }' \
   "$work/implicit/state.csv"
+
+# --- 5. what the window says ----------------------------------------------------------------
+# The status lines' colours (src/app/status_overlay.cpp), as Dear ImGui writes them in bytes.
+success_green="115 230 115"
+problem_orange="255 128 77"
+recording_red="255 64 64"
+# The panel opens at x = 10, 390 wide: the status lines belong right of x = 400. They sit at
+# the bottom, below the cloth (whose shading could match a colour): rows 480 to 600 are read.
+panel_right=400
+# shoot_window NAME: the window as shown, panel and status lines included (Shift+F12), by the
+# run in $work/NAME; the image's path in $window_shot.
+shoot_window() {
+  xdotool key --window "$window" shift+F12
+  sleep 0.5
+  window_shot=$(ls "$work/$1"/weft-screenshot-*.png | tail -1)
+}
+# pixels IMAGE "R G B" X0 X1: pixels of that colour in those columns of rows 480 to 600.
+pixels() { "$png_colour_count" "$1" $2 "$3" "$4" 480 600; }
+
+# A screenshot (F12) is news of success: green, not the problem colour.
+start_weft say
+xdotool key --window "$window" F12
+sleep 0.3
+shoot_window say
+quit_weft
+saved_green=$(pixels "$window_shot" "$success_green" $panel_right 800)
+saved_orange=$(pixels "$window_shot" "$problem_orange" 0 800)
+saved_rec=$(pixels "$window_shot" "$recording_red" 0 800)
+echo "'saved ...': $saved_green success-green pixels, $saved_orange problem-orange, $saved_rec REC-red"
+check test "$saved_green" -gt 100
+check test "$saved_orange" -eq 0
+check test "$saved_rec" -eq 0   # not recording: no REC
+
+# Hopeless parameters diverge every few steps; the message names a particle and is wider
+# than the window. It must wrap beside the panel: none of it over the panel, none cut at the
+# window's right edge (its last 8 columns stay clear).
+start_weft diverge --set springs.structural.stiffness=1e300 --set cloth.particle_mass=1e-300
+shoot_window diverge
+quit_weft
+beside=$(pixels "$window_shot" "$problem_orange" $panel_right 792)
+over_panel=$(pixels "$window_shot" "$problem_orange" 0 $panel_right)
+at_edge=$(pixels "$window_shot" "$problem_orange" 792 800)
+echo "divergence message: $beside problem-orange pixels beside the panel, $over_panel over it, $at_edge at the right edge"
+check test "$beside" -gt 300
+check test "$over_panel" -eq 0
+check test "$at_edge" -eq 0
+check grep -q "no step above" "$work/diverge/out.log"
+
+# Recording (--record, or F5): a red REC beside the panel.
+start_weft record --record "$work/record/session.toml"
+shoot_window record
+quit_weft
+rec=$(pixels "$window_shot" "$recording_red" $panel_right 800)
+echo "recording: $rec REC-red pixels beside the panel"
+check test "$rec" -gt 20
 
 echo "$passes passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -21,7 +21,10 @@ int count_colour(const raster::Framebuffer& fb, raster::Rgba8 colour, int x0, in
 
 // The stability plot's shape: measured and predicted series per integrator, and a note.
 PlotSpec stability_like(std::vector<PlotSeries> series, std::vector<std::string> notes) {
-    PlotSpec spec{"Largest stable dt against grid", "particles per side", "dt (s)"};
+    PlotSpec spec;
+    spec.title = "Largest stable dt against grid";
+    spec.x_label = "particles per side";
+    spec.y_label = "dt (s)";
     spec.series = std::move(series);
     spec.notes = std::move(notes);
     return spec;

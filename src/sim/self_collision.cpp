@@ -57,8 +57,8 @@ void SelfCollision::rebuild_hash(const Cloth& cloth) {
     slots_.resize(count);
     for (std::size_t p = 0; p < count; ++p) {
         const Vec3& x = cloth.positions[p];
-        cells_[p] = {cell_coordinate(x.x, thickness_), cell_coordinate(x.y, thickness_),
-                     cell_coordinate(x.z, thickness_)};
+        cells_[p] = {cell_coordinate(x.x, reach()), cell_coordinate(x.y, reach()),
+                     cell_coordinate(x.z, reach())};
         slots_[p] = static_cast<std::uint32_t>(hash_cell(cells_[p][0], cells_[p][1], cells_[p][2]));
         ++cell_start_[slots_[p]];
     }
@@ -81,18 +81,25 @@ bool SelfCollision::joined(std::uint32_t a, std::uint32_t b) const {
     return std::binary_search(joined_pairs_.begin(), joined_pairs_.end(), edge_key(a, b));
 }
 
-void SelfCollision::find_pairs(const Cloth& cloth,
-                               std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs) {
-    pairs.clear();
-    if (cloth.particle_count() == 0) return;
-    if (cloth.spring_count() != joined_spring_count_) rebuild_joined_pairs(cloth);
+bool SelfCollision::moved_beyond_margin(const Cloth& cloth) const {
+    if (built_at_.size() != cloth.particle_count()) return true;
+    const double limit = 0.25 * margin() * margin();  // (margin / 2)²
+    for (std::size_t p = 0; p < built_at_.size(); ++p) {
+        const Vec3 moved = cloth.positions[p] - built_at_[p];
+        if (!(glm::dot(moved, moved) <= limit)) return true;  // NaN too
+    }
+    return false;
+}
+
+void SelfCollision::rebuild_candidates(const Cloth& cloth) {
+    candidates_.clear();
     rebuild_hash(cloth);
-    const double thickness_squared = thickness_ * thickness_;
+    const double reach_squared = reach() * reach();
     // Each pair of particles in neighbouring cells is looked at once: from the particle
     // whose cell the other's is ahead of (the thirteen cells ahead: half of the 26, one of
     // each opposite pair), or, in one cell, from the lower index. A slot of the hash table
     // can hold other cells too (hash collisions), so a particle counts only in its own cell:
-    // no pair is found twice and none needs removing afterwards.
+    // no pair is found twice.
     auto look_at = [&](std::size_t p, const std::array<long long, 3>& cell, bool same_cell) {
         const std::size_t slot = hash_cell(cell[0], cell[1], cell[2]);
         for (std::uint32_t e = cell_start_[slot]; e < cell_start_[slot + 1]; ++e) {
@@ -102,10 +109,10 @@ void SelfCollision::find_pairs(const Cloth& cloth,
                 q_cell[2] != cell[2])
                 continue;
             const Vec3 d = cloth.positions[q] - cloth.positions[p];
-            if (glm::dot(d, d) >= thickness_squared) continue;
+            if (glm::dot(d, d) >= reach_squared) continue;
             const auto a = static_cast<std::uint32_t>(std::min<std::size_t>(p, q));
             const auto b = static_cast<std::uint32_t>(std::max<std::size_t>(p, q));
-            if (!joined(a, b)) pairs.emplace_back(a, b);
+            if (!joined(a, b)) candidates_.emplace_back(a, b);
         }
     };
     for (std::size_t p = 0; p < cloth.particle_count(); ++p) {
@@ -115,7 +122,25 @@ void SelfCollision::find_pairs(const Cloth& cloth,
             look_at(p, {cell[0] + ahead[0], cell[1] + ahead[1], cell[2] + ahead[2]}, false);
     }
     // In ascending order, the order the Gauss–Seidel pass resolves them in.
-    std::sort(pairs.begin(), pairs.end());
+    std::sort(candidates_.begin(), candidates_.end());
+    built_at_ = cloth.positions;
+}
+
+void SelfCollision::find_pairs(const Cloth& cloth,
+                               std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs) {
+    pairs.clear();
+    if (cloth.particle_count() == 0) return;
+    bool stale = false;
+    if (cloth.spring_count() != joined_spring_count_) {
+        rebuild_joined_pairs(cloth);
+        stale = true;  // a torn spring's ends may now collide
+    }
+    if (stale || moved_beyond_margin(cloth)) rebuild_candidates(cloth);
+    const double thickness_squared = thickness_ * thickness_;
+    for (const auto& [a, b] : candidates_) {
+        const Vec3 d = cloth.positions[b] - cloth.positions[a];
+        if (glm::dot(d, d) < thickness_squared) pairs.emplace_back(a, b);
+    }
 }
 
 std::size_t SelfCollision::resolve(Cloth& cloth, std::span<const Collider> colliders) {

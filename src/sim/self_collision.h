@@ -1,9 +1,15 @@
 // Self-collision: particles closer than the cloth's thickness push apart, unless a spring
-// joins them (neighbours are meant to be that close). Candidate pairs come from a spatial
-// hash of cells one thickness wide (Teschner et al. 2003; Müller's Ten Minute Physics), so
-// the cost stays linear in the number of particles. The pass keeps its tables between
-// steps and allocates only when the cloth grows or its springs change (tearing, cutting),
-// when the list of joined pairs is rebuilt — so it stays correct across tearing.
+// joins them (neighbours are meant to be that close).
+//
+// Candidate pairs are kept between steps, as a Verlet list (as molecular dynamics keeps its
+// neighbour lists): every unjoined pair closer than the reach, thickness + margin, when the
+// list was built. While no particle has moved more than half the margin since then, any pair
+// now closer than the thickness was closer than the reach then, so it is on the list: the
+// pass only measures the listed pairs. An explicit step moves a particle a small part of a
+// spacing, so the list lasts many steps; it is rebuilt when a particle has moved further,
+// when springs are torn or cut (their ends may now collide), or when the cloth changes size.
+// The list is built from a spatial hash of cells one reach wide (Teschner et al. 2003;
+// Müller's Ten Minute Physics), so the cost stays linear in the number of particles.
 #pragma once
 
 #include <array>
@@ -47,6 +53,12 @@ class SelfCollision {
   private:
     // One Gauss–Seidel pass over pairs_; returns the deepest overlap it corrected (m).
     double separate_pairs(Cloth& cloth) const;
+    double margin() const { return thickness_; }            // m: how far the list looks past
+    double reach() const { return thickness_ + margin(); }  // m: the list's radius
+    // True when some particle has moved more than half the margin since the list was built
+    // (or the list does not fit the cloth).
+    bool moved_beyond_margin(const Cloth& cloth) const;
+    void rebuild_candidates(const Cloth& cloth);
     void rebuild_hash(const Cloth& cloth);
     void rebuild_joined_pairs(const Cloth& cloth);
     bool joined(std::uint32_t a, std::uint32_t b) const;
@@ -54,13 +66,16 @@ class SelfCollision {
 
     double thickness_;
     std::size_t slot_mask_ = 0;                    // hash table size - 1 (a power of two)
-    std::vector<std::array<long long, 3>> cells_;  // each particle's cell (x, y, z)
+    std::vector<std::array<long long, 3>> cells_;  // each particle's cell (x, y, z), reach wide
     std::vector<std::uint32_t> slots_;             // each particle's hash table slot
     std::vector<std::uint32_t> cell_start_;        // prefix sums over the hash table, size + 1
     std::vector<std::uint32_t> cell_entries_;      // particle indices sorted by cell
     std::vector<std::uint64_t> joined_pairs_;      // sorted edge keys of the live springs
     std::size_t joined_spring_count_ = static_cast<std::size_t>(-1);
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs_;
+    // The Verlet list: unjoined pairs closer than reach() at built_at_, ascending.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> candidates_;
+    std::vector<Vec3> built_at_;  // m: the positions the list was built at
 };
 
 }  // namespace weft

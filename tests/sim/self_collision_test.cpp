@@ -2,6 +2,7 @@
 // finds, torn neighbours count as unjoined, and resolved pairs end at the thickness.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <random>
 
@@ -53,6 +54,28 @@ TEST(SelfCollision, HashFindsExactlyTheBruteForcePairs) {
         ASSERT_GT(expected.size(), 10u);
         EXPECT_EQ(found, expected);
     }
+}
+
+TEST(SelfCollision, TheKeptListFindsExactlyTheBruteForcePairsAsParticlesMove) {
+    // The pass keeps its candidate list between calls while no particle has moved more than
+    // half its margin (one thickness): random moves of up to 0.2 thickness a call (so some
+    // calls keep the list and some rebuild it) must find exactly what brute force finds.
+    Cloth cloth = crumpled_sheet(5);
+    const double thickness = 0.02;
+    SelfCollision pass(thickness);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> nudge(-0.2 * thickness / std::sqrt(3.0),
+                                                 0.2 * thickness / std::sqrt(3.0));
+    std::size_t compared_pairs = 0;
+    for (int call = 0; call < 40; ++call) {
+        Pairs found;
+        pass.find_pairs(cloth, found);
+        const Pairs expected = brute_force_pairs(cloth, thickness);
+        ASSERT_EQ(found, expected) << "call " << call;
+        compared_pairs += expected.size();
+        for (Vec3& x : cloth.positions) x += Vec3(nudge(rng), nudge(rng), nudge(rng));
+    }
+    EXPECT_GT(compared_pairs, 400u);
 }
 
 TEST(SelfCollision, TornNeighboursCollideAgain) {

@@ -44,6 +44,9 @@ const char* const controls_text[][2] = {
 };
 const int controls_count = static_cast<int>(std::size(controls_text));
 
+// The longest label beside a control; the label column is as wide as it.
+constexpr const char* widest_label = "wind heading (deg)";
+
 namespace {
 
 // The last refused edit, shown in the panel until the next edit succeeds.
@@ -192,9 +195,9 @@ void forces(DemoState& state) {
                    strength * std::sin(heading * M_PI / 180.0)}));
 }
 
-// An optional feature table such as [tearing]: a checkbox for its presence, a slider for its
-// value. Switching it on is an edit like any other; switching it off removes the table, which
-// is always valid.
+// An optional feature table such as [tearing]: a checkbox for its presence, and under it a
+// slider for its value (beside the checkbox it ran past a narrow panel's edge). Switching it
+// on is an edit like any other; switching it off removes the table, which is always valid.
 void optional_feature(DemoState& state, const char* label, const char* table, const char* key,
                       std::optional<double> Scene::*member, double shown, double low, double high,
                       const char* format) {
@@ -215,8 +218,6 @@ void optional_feature(DemoState& state, const char* label, const char* table, co
                 edit_error.clear();
         }
     }
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(120);
     if (slider_log(key, v, low, high, format) && on) edit(state, path, number(v));
     ImGui::PopID();
 }
@@ -409,17 +410,40 @@ void scenes(DemoState& state) {
         }
         ImGui::EndCombo();
     }
-    if (ImGui::Button("reset (R)")) state.reset_simulation();
     if (!error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", error.c_str());
 }
 
 }  // namespace
 
-void draw_control_panel(DemoState& state) {
-    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(390, 0), ImGuiCond_FirstUseEver);
-    ImGui::Begin("weft");
+bool draw_control_panel(DemoState& state, const ScreenRect& area) {
+    // Docked where the layout puts it, its height the window's: what does not fit scrolls
+    // inside the panel instead of running off the window (issue 18, item 2). The title bar's
+    // arrow folds it to a strip, and the view takes the window.
+    ImGui::SetNextWindowPos(ImVec2(area.x, area.y), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(area.width, area.height), ImGuiCond_Always);
+    const bool open = ImGui::Begin(
+        "weft", nullptr,
+        ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings);
+    if (!open) {
+        ImGui::End();
+        return false;
+    }
+    // Every label in a column of its own right of its control, as wide as the widest label,
+    // so no unit is cut off; text wraps at the panel's edge.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    ImGui::PushItemWidth(-(ImGui::CalcTextSize(widest_label).x + style.ItemInnerSpacing.x));
+    ImGui::PushTextWrapPos(0.0f);
+    // A slider's value is written over its grab: a thin, translucent grab leaves the digits
+    // readable ("4|0", not a block hiding the middle digit).
+    ImGui::PushStyleVar(ImGuiStyleVar_GrabMinSize, 3.0f);
+    ImVec4 grab = style.Colors[ImGuiCol_SliderGrab];
+    grab.w = 0.3f;
+    ImGui::PushStyleColor(ImGuiCol_SliderGrab, grab);
+    // The scene's name, and reset beside it: at the top, where no section's height can push
+    // it out of sight.
     ImGui::TextUnformatted(state.simulation.scene().name.c_str());
+    ImGui::SameLine();
+    if (ImGui::SmallButton("reset (R)")) state.reset_simulation();
     statistics(state);
     if (ImGui::CollapsingHeader("solver", ImGuiTreeNodeFlags_DefaultOpen)) solver(state);
     if (ImGui::CollapsingHeader("materials", ImGuiTreeNodeFlags_DefaultOpen)) materials(state);
@@ -434,7 +458,12 @@ void draw_control_panel(DemoState& state) {
     if (!edit_error.empty())
         ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "refused: %s", edit_error.c_str());
     ImGui::TextDisabled("H: help");
+    ImGui::PopStyleColor();
+    ImGui::PopStyleVar();
+    ImGui::PopTextWrapPos();
+    ImGui::PopItemWidth();
     ImGui::End();
+    return true;
 }
 
 void draw_help_overlay(bool& open) {

@@ -10,7 +10,8 @@
 #      said in the success colour, a divergence in the problem colour and wrapped beside the
 #      panel, and a red REC shows while recording;
 #   6. the panel and the view share the window: at 800x600 and 1280x720 the view (the cloth
-#      with it) is shown whole beside the panel, none of it under the panel.
+#      with it) is shown whole beside the panel, none of it under the panel;
+#   7. a refused edit (-5 typed into a stiffness) is said under that slider, whole.
 # Usage: window_e2e_test.sh WEFT PNG_DIFF SOURCE_DIR PNG_COLOUR_COUNT
 set -uo pipefail
 weft=$(realpath "$1")
@@ -250,6 +251,50 @@ for size in 800x600:300 1280x720:384; do
   check test "$view_width" -eq $((window_width - panel_width))
   check awk -v f="$shown" 'BEGIN { exit !(f < 0.05) }'
 done
+
+# --- 7. a refused edit is said under its control ---------------------------------------------
+# Ctrl+click on the structural stiffness slider (the panel's first stiffness, at y = 318)
+# types a value; -5 is refused. The refusal must be said right under the slider (rows 326 to
+# 366), whole, inside the panel, and stay there (issue 18, item 3: it sat at the panel's
+# foot, cut off, out of sight) until the next edit, 700, which is taken.
+refusal_red="255 102 102"
+# type_into_slider X Y TEXT: Ctrl+click at (X, Y) and type TEXT, through the X server's own
+# input (the slider ignores clicks sent to the window alone). Each key and button is held
+# for 0.1 s: Dear ImGui 1.86 reads keys and buttons once a frame, and one pressed and let go
+# within a frame is lost.
+hold() { xdotool "$1"down "$2"; sleep 0.1; xdotool "$1"up "$2"; sleep 0.1; }
+type_into_slider() {
+  xdotool windowfocus --sync "$window"
+  xdotool mousemove --window "$window" "$1" "$2"
+  sleep 0.2
+  xdotool keydown ctrl
+  sleep 0.1
+  hold mouse 1
+  xdotool keyup ctrl
+  sleep 0.3
+  hold key ctrl+a   # the slider's text is selected already; this makes sure
+  xdotool type --delay 100 -- "$3"
+  hold key Return
+  sleep 0.5
+}
+refusal_pixels() { "$png_colour_count" "$window_shot" $refusal_red "$1" "$2" 326 366; }
+start_weft refuse
+type_into_slider 60 318 -5
+shoot_window refuse
+under_slider=$(refusal_pixels 0 $panel_right)
+beyond_panel=$(refusal_pixels $panel_right 800)
+sleep 3
+shoot_window refuse
+later=$(refusal_pixels 0 $panel_right)
+type_into_slider 60 318 700
+shoot_window refuse
+after_next_edit=$(refusal_pixels 0 800)
+quit_weft
+echo "refused -5: $under_slider refusal-red pixels under the slider, $beyond_panel beyond the panel; 3 s later $later; after the next edit $after_next_edit"
+check test "$under_slider" -gt 300
+check test "$beyond_panel" -eq 0
+check test "$later" -eq "$under_slider"
+check test "$after_next_edit" -eq 0
 
 echo "$passes passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/atomic_file.h"
+#include "app/edit_answer.h"
 #include "app/screenshot_names.h"
 #include "app/session_record.h"
 #include "app/status_text.h"
@@ -44,19 +45,26 @@ const char* const controls_text[][2] = {
 };
 const int controls_count = static_cast<int>(std::size(controls_text));
 
+// The longest label beside a control; the label column is as wide as it.
+constexpr const char* widest_label = "wind heading (deg)";
+
 namespace {
 
-// The last refused edit, shown in the panel until the next edit succeeds.
-std::string edit_error;
+// The last edit and, if it was refused, why: said under the control that made it.
+LastEdit last_edit;
 
 // Every edit goes through DemoState::change as a --set style override, checked exactly like a
 // scene file: a refused value (one typed past a slider's range with Ctrl+click, say) shows
-// its error and changes nothing.
+// its error and changes nothing. `key` also names the control for its refusal.
 void edit(DemoState& state, const std::string& key, const std::string& value) {
-    if (auto error = state.change({key + "=" + value}))
-        edit_error = *error;
-    else
-        edit_error.clear();
+    last_edit.answer(key, state.change({key + "=" + value}));
+}
+
+// Under the control named `control`, the refusal of its edit if that was the last edit:
+// whole, wrapped to the panel, where the eye already is.
+void refusal_below(std::string_view control) {
+    const std::string& refusal = last_edit.refusal_under(control);
+    if (!refusal.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", refusal.c_str());
 }
 
 std::string number(double value) {
@@ -125,9 +133,11 @@ void solver(DemoState& state) {
     if (ImGui::Combo("integrator", &current, integrator_names,
                      static_cast<int>(std::size(integrator_names))))
         edit(state, "solver.integrator", integrator_names[current]);  // a bare word: a string
+    refusal_below("solver.integrator");
     double dt_ms = sim.dt() * 1e3;
     if (slider_log("dt (ms)", dt_ms, 0.01, 10.0, "%.3f"))
         edit(state, "solver.dt", number(dt_ms * 1e-3));
+    refusal_below("solver.dt");
     const double limit =
         estimated_step_limit(sim.cloth(), sim.force_field().air_drag, sim.integrator());
     if (limit > 0.0 && std::isfinite(limit)) {
@@ -161,17 +171,21 @@ void materials(DemoState& state) {
             bool enabled = spec.enabled;
             if (ImGui::Checkbox(label, &enabled))
                 edit(state, key + ".enabled", enabled ? "true" : "false");
+            refusal_below(key + ".enabled");
         }
         double stiffness = spec.stiffness, damping = spec.damping;
         if (slider_log("stiffness (N/m)", stiffness, 1.0, 1e5, "%.0f"))
             edit(state, key + ".stiffness", number(stiffness));
+        refusal_below(key + ".stiffness");
         if (slider_log("damping (N s/m)", damping, 1e-4, 10.0, "%.4f"))
             edit(state, key + ".damping", number(damping));
+        refusal_below(key + ".damping");
         ImGui::PopID();
     }
     double mass_g = state.simulation.scene().cloth.particle_mass * 1e3;
     if (slider_log("particle mass (g)", mass_g, 0.1, 1000.0, "%.2f"))
         edit(state, "cloth.particle_mass", number(mass_g * 1e-3));
+    refusal_below("cloth.particle_mass");
 }
 
 void forces(DemoState& state) {
@@ -179,9 +193,11 @@ void forces(DemoState& state) {
     float gravity = static_cast<float>(f.gravity[1]);
     if (ImGui::SliderFloat("gravity y (m/s2)", &gravity, -30.0f, 5.0f))
         edit(state, "forces.gravity", vec3({f.gravity[0], gravity, f.gravity[2]}));
+    refusal_below("forces.gravity");
     double air_drag = f.air_drag;
     if (slider_log("air drag (N s/m)", air_drag, 1e-4, 1.0, "%.4f"))
         edit(state, "forces.air_drag", number(air_drag));
+    refusal_below("forces.air_drag");
     float strength = static_cast<float>(std::hypot(f.wind[0], f.wind[2]));
     float heading = static_cast<float>(std::atan2(f.wind[2], f.wind[0]) * 180.0 / M_PI);
     bool wind_changed = ImGui::SliderFloat("wind (m/s)", &strength, 0.0f, 20.0f);
@@ -190,11 +206,12 @@ void forces(DemoState& state) {
         edit(state, "forces.wind",
              vec3({strength * std::cos(heading * M_PI / 180.0), f.wind[1],
                    strength * std::sin(heading * M_PI / 180.0)}));
+    refusal_below("forces.wind");
 }
 
-// An optional feature table such as [tearing]: a checkbox for its presence, a slider for its
-// value. Switching it on is an edit like any other; switching it off removes the table, which
-// is always valid.
+// An optional feature table such as [tearing]: a checkbox for its presence, and under it a
+// slider for its value (beside the checkbox it ran past a narrow panel's edge). Switching it
+// on is an edit like any other; switching it off removes the table, which is always valid.
 void optional_feature(DemoState& state, const char* label, const char* table, const char* key,
                       std::optional<double> Scene::*member, double shown, double low, double high,
                       const char* format) {
@@ -209,15 +226,11 @@ void optional_feature(DemoState& state, const char* label, const char* table, co
         } else {
             Scene without = state.simulation.scene();
             without.*member = std::nullopt;
-            if (auto error = state.change_scene(without))
-                edit_error = *error;
-            else
-                edit_error.clear();
+            last_edit.answer(path, state.change_scene(without));
         }
     }
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(120);
     if (slider_log(key, v, low, high, format) && on) edit(state, path, number(v));
+    refusal_below(path);
     ImGui::PopID();
 }
 
@@ -243,12 +256,9 @@ void colliders(DemoState& state) {
         changed |= slider("restitution", spec.restitution, 0.0, 1.0, "%.2f");
         changed |= slider("friction", spec.friction, 0.0, 2.0, "%.2f");
         if (sphere) changed |= slider_log("radius (m)", spec.radius, 0.02, 2.0, "%.3f");
-        if (changed) {
-            if (auto error = state.change_scene(wanted))
-                edit_error = *error;
-            else
-                edit_error.clear();
-        }
+        const std::string control = "colliders." + std::to_string(c);
+        if (changed) last_edit.answer(control, state.change_scene(wanted));
+        refusal_below(control);
         ImGui::PopID();
     }
 }
@@ -303,15 +313,16 @@ void comparison(DemoState& state) {
         const Simulation& copy = state.companions[c].simulation;
         ImGui::Text("copy %zu", c + 1);
         int current = static_cast<int>(copy.integrator());
-        std::optional<std::string> error;
+        const std::string control = "copy." + std::to_string(c);
         if (ImGui::Combo("integrator", &current, integrator_names,
                          static_cast<int>(std::size(integrator_names))))
-            error = state.change_companion(
-                c, {std::string("solver.integrator=") + integrator_names[current]});
+            last_edit.answer(control, state.change_companion(c, {std::string("solver.integrator=") +
+                                                                 integrator_names[current]}));
         double dt_ms = copy.dt() * 1e3;
         if (slider_log("dt (ms)", dt_ms, 0.01, 10.0, "%.3f"))
-            error = state.change_companion(c, {"solver.dt=" + number(dt_ms * 1e-3)});
-        if (error) edit_error = *error;
+            last_edit.answer(control,
+                             state.change_companion(c, {"solver.dt=" + number(dt_ms * 1e-3)}));
+        refusal_below(control);
         if (ImGui::Button("remove")) state.remove_companion(c);
         ImGui::PopID();
     }
@@ -369,11 +380,14 @@ void limits(DemoState& state) {
                      &Scene::self_collision_thickness, 0.01, 0.002, 0.1, "%.3f m");
     double radius = state.drag_radius;
     if (slider_log("drag radius (m)", radius, 0.005, 0.5, "%.3f")) {
-        if (radius > 0.0 && radius <= 10.0)
-            state.drag_radius = radius;
-        else
-            edit_error = "drag radius must be in (0, 10] m, got " + number(radius);
+        const bool taken = radius > 0.0 && radius <= 10.0;
+        if (taken) state.drag_radius = radius;
+        last_edit.answer("drag_radius",
+                         taken ? std::nullopt
+                               : std::optional<std::string>(
+                                     "drag radius must be in (0, 10] m, got " + number(radius)));
     }
+    refusal_below("drag_radius");
     if (ImGui::Button("release all pins (U)")) state.release_all_pins();
 }
 
@@ -409,17 +423,40 @@ void scenes(DemoState& state) {
         }
         ImGui::EndCombo();
     }
-    if (ImGui::Button("reset (R)")) state.reset_simulation();
     if (!error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", error.c_str());
 }
 
 }  // namespace
 
-void draw_control_panel(DemoState& state) {
-    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(390, 0), ImGuiCond_FirstUseEver);
-    ImGui::Begin("weft");
+bool draw_control_panel(DemoState& state, const ScreenRect& area) {
+    // Docked where the layout puts it, its height the window's: what does not fit scrolls
+    // inside the panel instead of running off the window (issue 18, item 2). The title bar's
+    // arrow folds it to a strip, and the view takes the window.
+    ImGui::SetNextWindowPos(ImVec2(area.x, area.y), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(area.width, area.height), ImGuiCond_Always);
+    const bool open = ImGui::Begin(
+        "weft", nullptr,
+        ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings);
+    if (!open) {
+        ImGui::End();
+        return false;
+    }
+    // Every label in a column of its own right of its control, as wide as the widest label,
+    // so no unit is cut off; text wraps at the panel's edge.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    ImGui::PushItemWidth(-(ImGui::CalcTextSize(widest_label).x + style.ItemInnerSpacing.x));
+    ImGui::PushTextWrapPos(0.0f);
+    // A slider's value is written over its grab: a thin, translucent grab leaves the digits
+    // readable ("4|0", not a block hiding the middle digit).
+    ImGui::PushStyleVar(ImGuiStyleVar_GrabMinSize, 3.0f);
+    ImVec4 grab = style.Colors[ImGuiCol_SliderGrab];
+    grab.w = 0.3f;
+    ImGui::PushStyleColor(ImGuiCol_SliderGrab, grab);
+    // The scene's name, and reset beside it: at the top, where no section's height can push
+    // it out of sight.
     ImGui::TextUnformatted(state.simulation.scene().name.c_str());
+    ImGui::SameLine();
+    if (ImGui::SmallButton("reset (R)")) state.reset_simulation();
     statistics(state);
     if (ImGui::CollapsingHeader("solver", ImGuiTreeNodeFlags_DefaultOpen)) solver(state);
     if (ImGui::CollapsingHeader("materials", ImGuiTreeNodeFlags_DefaultOpen)) materials(state);
@@ -431,10 +468,13 @@ void draw_control_panel(DemoState& state) {
     if (ImGui::CollapsingHeader("view")) view_toggles(state);
     if (ImGui::CollapsingHeader("scenes", ImGuiTreeNodeFlags_DefaultOpen)) scenes(state);
     if (ImGui::CollapsingHeader("save scene")) save(state);
-    if (!edit_error.empty())
-        ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "refused: %s", edit_error.c_str());
     ImGui::TextDisabled("H: help");
+    ImGui::PopStyleColor();
+    ImGui::PopStyleVar();
+    ImGui::PopTextWrapPos();
+    ImGui::PopItemWidth();
     ImGui::End();
+    return true;
 }
 
 void draw_help_overlay(bool& open) {

@@ -4,10 +4,13 @@
 #pragma once
 
 #include "app/demo_state.h"
+#include "app/screen_layout.h"
 
 namespace weft::app {
 
-void draw_control_panel(DemoState& state);
+// Draws the panel into `area` (WindowLayout::panel). Returns false when the panel is folded
+// to its title bar, so the view can take the window.
+bool draw_control_panel(DemoState& state, const ScreenRect& area);
 void draw_help_overlay(bool& open);
 
 // Every key and mouse action, for the help overlay and the README.

@@ -68,7 +68,18 @@ struct Window {
     WorkerPool draw_pool{default_thread_count()};
     bool save_window_next_frame = false;
     int hand_column = 0;  // the column a drag or cut started in: it goes on in its coordinates
+    bool panel_folded = false;  // the panel shows only its title bar (as of the last frame)
+    WindowLayout layout;        // this frame's: where the panel and the view are
 };
+
+// The panel and the view, in the renderer's pixels. The framebuffer is the view's size and
+// the camera's viewport is the view: the cloth is never drawn under the panel.
+WindowLayout layout_of(const Window& w) {
+    int width = 0, height = 0;
+    SDL_GetRendererOutputSize(w.renderer, &width, &height);
+    return lay_out_window(static_cast<float>(width), static_cast<float>(height), w.panel_folded,
+                          ImGui::GetFrameHeight());
+}
 
 // The window as shown, panel included (Shift+F12).
 void save_window_screenshot(DemoState& state, Window& w) {
@@ -113,7 +124,7 @@ void save_screenshot(DemoState& state, const Window& w) {
 }
 
 Columns columns_of(const DemoState& state, const Window& w) {
-    return Columns::split(w.framebuffer.width(), w.framebuffer.height(), state.run_count());
+    return Columns::split(w.layout.view, state.run_count());
 }
 
 // The cursor in the coordinates of the column it is over, and that column.
@@ -268,8 +279,8 @@ void move_camera(DemoState& state, double seconds) {
 // ---- drawing --------------------------------------------------------------------------------
 
 bool present_frame(DemoState& state, Window& w) {
-    int width = 0, height = 0;
-    SDL_GetRendererOutputSize(w.renderer, &width, &height);
+    const ScreenRect& view = w.layout.view;
+    int width = static_cast<int>(view.width), height = static_cast<int>(view.height);
     if (width < 1 || height < 1 || (SDL_GetWindowFlags(w.window) & SDL_WINDOW_MINIMIZED))
         return false;
     width = std::min(width, raster::Framebuffer::max_side);
@@ -286,14 +297,18 @@ bool present_frame(DemoState& state, Window& w) {
     }
     render_runs(w.framebuffer, w.run_frames, state, columns_of(state, w), &w.draw_pool);
     SDL_UpdateTexture(w.texture, nullptr, w.framebuffer.colours().data(), width * 4);
-    SDL_RenderCopy(w.renderer, w.texture, nullptr, nullptr);
+    const SDL_Rect beside_panel{static_cast<int>(view.x), static_cast<int>(view.y), width, height};
+    SDL_RenderCopy(w.renderer, w.texture, nullptr, &beside_panel);
     return true;
 }
 
-// Side by side: each column's run named at the top of its column, with its cost and energy.
+// Side by side: each column's run named at the top of its column, with its cost and energy,
+// wrapped to the column's width so it never reaches into the next column or the panel.
 void draw_run_labels(const DemoState& state, const Window& w) {
     if (state.run_count() < 2) return;
     const Columns columns = columns_of(state, w);
+    constexpr float margin = 8.0f;
+    const float widest = std::max(1.0f, static_cast<float>(columns.width) - 2.0f * margin);
     double companions_seconds = 0.0;
     for (const Companion& companion : state.companions) companions_seconds += companion.seconds;
     for (int run = 0; run < state.run_count(); ++run) {
@@ -304,14 +319,16 @@ void draw_run_labels(const DemoState& state, const Window& w) {
         const int recoveries =
             run == 0 ? state.recovery.recoveries
                      : state.companions[static_cast<std::size_t>(run - 1)].recovery.recoveries;
-        ImGui::SetNextWindowPos(ImVec2(static_cast<float>((run + 1) * columns.width) - 8.0f, 8.0f),
+        ImGui::SetNextWindowPos(ImVec2(columns.right_of(run) - margin, columns.top + margin),
                                 ImGuiCond_Always, ImVec2(1.0f, 0.0f));
+        ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(widest, FLT_MAX));
         ImGui::SetNextWindowBgAlpha(0.55f);
         char name[32];
         std::snprintf(name, sizeof name, "run %d", run);
         ImGui::Begin(name, nullptr,
                      ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                          ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoFocusOnAppearing);
+        ImGui::PushTextWrapPos(widest - ImGui::GetStyle().WindowPadding.x);
         ImGui::Text("%s%s",
                     run == 0 ? "main: " : "copy: ", integrator_name(simulation.integrator()));
         ImGui::Text("dt %.3g ms   %.2f ms stepping/frame", simulation.dt() * 1e3, seconds * 1e3);
@@ -321,21 +338,9 @@ void draw_run_labels(const DemoState& state, const Window& w) {
         if (auto solve = linear_solve_text(simulation)) ImGui::TextUnformatted(solve->c_str());
         if (recoveries > 0)
             ImGui::Text("recovered %s", counted(recoveries, "time", "times").c_str());
+        ImGui::PopTextWrapPos();
         ImGui::End();
     }
-}
-
-// The part of the window the panel leaves free, for the status lines. Begin on a window
-// already begun this frame appends to it: Dear ImGui's public way to ask where the panel
-// (control_panel.cpp's window "weft") is.
-ScreenRect area_beside_the_panel() {
-    ImGui::Begin("weft");
-    const ImVec2 position = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
-    ImGui::End();
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    constexpr float narrowest = 240.0f;  // px: about thirty characters a line
-    return area_beside_panel({0.0f, 0.0f, display.x, display.y},
-                             {position.x, position.y, size.x, size.y}, narrowest);
 }
 
 }  // namespace
@@ -396,6 +401,7 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
     double seconds_per_step = 0.0;
     bool running = true;
     while (running) {
+        w.layout = layout_of(w);
         SDL_Event event;
         while (SDL_PollEvent(&event))
             if (!handle_event(event, state, w)) running = false;
@@ -438,9 +444,9 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
         ImGui_ImplSDLRenderer_NewFrame();
         ImGui_ImplSDL2_NewFrame();
         ImGui::NewFrame();
-        draw_control_panel(state);
+        w.panel_folded = !draw_control_panel(state, w.layout.panel);
         draw_help_overlay(state.show_help);
-        draw_status_overlay(state, now, area_beside_the_panel());
+        draw_status_overlay(state, now, w.layout.view);
         draw_run_labels(state, w);
         ImGui::Render();
 

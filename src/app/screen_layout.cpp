@@ -1,23 +1,24 @@
 #include "app/screen_layout.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace weft::app {
 
-ScreenRect area_beside_panel(const ScreenRect& window, const ScreenRect& panel, float narrowest) {
-    // The panel can be dragged partly off the window: only what lies inside it takes room.
-    const float panel_left = std::clamp(panel.x, window.x, window.right());
-    const float panel_right = std::clamp(panel.right(), window.x, window.right());
-    const float left_width = panel_left - window.x;
-    const float right_width = window.right() - panel_right;
-    ScreenRect area = window;
-    if (right_width >= left_width) {
-        area.x = panel_right;
-        area.width = right_width;
+WindowLayout lay_out_window(float width, float height, bool panel_folded, float title_height) {
+    constexpr float share = 0.3f, narrowest = 300.0f, widest = 400.0f;
+    const float panel_width =
+        std::floor(std::min(std::clamp(share * width, narrowest, widest), 0.5f * width));
+    WindowLayout layout;
+    if (panel_folded) {
+        const float strip = std::min(title_height, height);
+        layout.panel = {0.0f, 0.0f, panel_width, strip};
+        layout.view = {0.0f, strip, width, height - strip};
     } else {
-        area.width = left_width;
+        layout.panel = {0.0f, 0.0f, panel_width, height};
+        layout.view = {panel_width, 0.0f, width - panel_width, height};
     }
-    return area.width >= narrowest ? area : window;
+    return layout;
 }
 
 }  // namespace weft::app

@@ -5,21 +5,27 @@
 
 namespace weft::app {
 
-Columns Columns::split(int view_width, int view_height, int runs) {
+Columns Columns::split(const ScreenRect& view, int runs) {
     Columns columns;
     columns.count = std::max(1, runs);
-    columns.width = std::max(1, view_width / columns.count);
-    columns.height = std::max(1, view_height);
+    columns.width = std::max(1, static_cast<int>(view.width) / columns.count);
+    columns.height = std::max(1, static_cast<int>(view.height));
+    columns.left = view.x;
+    columns.top = view.y;
     return columns;
 }
 
 int Columns::column_at(float window_x) const {
-    const int column = static_cast<int>(std::floor(window_x / static_cast<float>(width)));
+    const int column = static_cast<int>(std::floor((window_x - left) / static_cast<float>(width)));
     return std::clamp(column, 0, count - 1);
 }
 
+float Columns::right_of(int column) const {
+    return left + static_cast<float>((column + 1) * width);
+}
+
 glm::vec2 Columns::local(const glm::vec2& window_point, int column) const {
-    return {window_point.x - static_cast<float>(column * width), window_point.y};
+    return {window_point.x - left - static_cast<float>(column * width), window_point.y - top};
 }
 
 namespace {

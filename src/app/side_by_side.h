@@ -8,17 +8,24 @@
 #include <glm/vec2.hpp>
 
 #include "app/demo_state.h"
+#include "app/screen_layout.h"
 #include "raster/framebuffer.h"
 
 namespace weft::app {
 
+// The view's columns, in the window: they share the view beside the panel, not the window,
+// so no run is drawn under the panel (issue 18, item 4).
 struct Columns {
-    int count = 1;   // runs shown
-    int width = 1;   // px, of each column; an uneven split leaves the last pixels background
-    int height = 1;  // px
+    int count = 1;      // runs shown
+    int width = 1;      // px, of each column; an uneven split leaves the last pixels background
+    int height = 1;     // px
+    float left = 0.0f;  // px, the view's left edge in the window: where the first column starts
+    float top = 0.0f;   // px, the view's top edge in the window
 
-    static Columns split(int view_width, int view_height, int runs);
+    // `view` in whole pixels (WindowLayout::view), split into `runs` columns.
+    static Columns split(const ScreenRect& view, int runs);
     int column_at(float window_x) const;  // the column under x, clamped to the columns
+    float right_of(int column) const;     // the window x of the column's right edge
     // A window point in the coordinates of `column`'s own view.
     glm::vec2 local(const glm::vec2& window_point, int column) const;
     ViewSize view() const { return {width, height}; }

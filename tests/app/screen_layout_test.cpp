@@ -1,5 +1,6 @@
-// Where the status lines may draw: beside the panel, never under it (issue 18, item 5).
-// Truth: the strips left and right of the panel, worked out by hand for each case.
+// How the window is shared between the panel and the view (issue 18, items 2 and 4): the
+// view lies beside the panel, never under it, at the sizes the issue names and at the
+// limits of the rule. Truth: the rule's arithmetic worked out by hand for each case.
 #include <gtest/gtest.h>
 
 #include "app/screen_layout.h"
@@ -7,7 +8,7 @@
 namespace weft::app {
 namespace {
 
-constexpr ScreenRect window{0, 0, 800, 600};
+constexpr float title_height = 19.0f;
 
 void expect_rect(const ScreenRect& got, const ScreenRect& want) {
     EXPECT_EQ(got.x, want.x);
@@ -16,22 +17,44 @@ void expect_rect(const ScreenRect& got, const ScreenRect& want) {
     EXPECT_EQ(got.height, want.height);
 }
 
-TEST(ScreenLayout, APanelOnTheLeftLeavesTheStripRightOfIt) {
-    // The panel as it opens: at (10, 10), 390 wide, 580 tall.
-    expect_rect(area_beside_panel(window, {10, 10, 390, 580}, 240), {400, 0, 400, 600});
+void expect_layout(float width, float height, bool folded, const ScreenRect& panel,
+                   const ScreenRect& view) {
+    const WindowLayout layout = lay_out_window(width, height, folded, title_height);
+    expect_rect(layout.panel, panel);
+    expect_rect(layout.view, view);
 }
 
-TEST(ScreenLayout, APanelDraggedRightLeavesTheWiderStripLeftOfIt) {
-    expect_rect(area_beside_panel(window, {500, 40, 280, 300}, 240), {0, 0, 500, 600});
+TEST(ScreenLayout, At800x600ThePanelTakesItsNarrowestWidthAndTheViewTheRest) {
+    // 30 % of 800 is 240, below the narrowest panel: 300 px.
+    expect_layout(800, 600, false, {0, 0, 300, 600}, {300, 0, 500, 600});
 }
 
-TEST(ScreenLayout, APanelPartlyOffTheWindowTakesOnlyWhatIsInside) {
-    expect_rect(area_beside_panel(window, {-200, 0, 300, 600}, 240), {100, 0, 700, 600});
+TEST(ScreenLayout, At1280x720ThePanelTakesThirtyPercentInWholePixels) {
+    // 30 % of 1280 is 384.
+    expect_layout(1280, 720, false, {0, 0, 384, 720}, {384, 0, 896, 720});
 }
 
-TEST(ScreenLayout, TooNarrowAStripFallsBackToTheWholeWindow) {
-    // 150 px left, 160 px right: too cramped to read, so the text goes over the panel.
-    expect_rect(area_beside_panel(window, {150, 0, 490, 600}, 240), window);
+TEST(ScreenLayout, AWideWindowGivesThePanelNoMoreThanItsWidest) {
+    expect_layout(2560, 1440, false, {0, 0, 400, 1440}, {400, 0, 2160, 1440});
+}
+
+TEST(ScreenLayout, ANarrowWindowKeepsHalfForTheView) {
+    // 300 px would leave the cloth 201 of 501: the panel gives way to half.
+    expect_layout(501, 400, false, {0, 0, 250, 400}, {250, 0, 251, 400});
+}
+
+TEST(ScreenLayout, TheViewNeverOverlapsTheOpenPanel) {
+    for (float width : {320.0f, 640.0f, 800.0f, 1024.0f, 1280.0f, 1333.0f, 1920.0f}) {
+        const WindowLayout layout = lay_out_window(width, 600, false, title_height);
+        EXPECT_EQ(layout.view.x, layout.panel.right()) << width;
+        EXPECT_EQ(layout.view.right(), width) << width;
+        EXPECT_GE(layout.view.width, 0.5f * width) << width;
+        EXPECT_EQ(layout.panel.width, static_cast<float>(static_cast<int>(layout.panel.width)));
+    }
+}
+
+TEST(ScreenLayout, AFoldedPanelIsAStripAcrossTheTopAndTheViewTakesTheWindowBelowIt) {
+    expect_layout(800, 600, true, {0, 0, 300, 19}, {0, 19, 800, 581});
 }
 
 }  // namespace

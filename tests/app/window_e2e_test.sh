@@ -8,7 +8,10 @@
 #      recorded (--record) replays headless to the same state bit for bit;
 #   5. what the window says, read off window screenshots (Shift+F12): a saved screenshot is
 #      said in the success colour, a divergence in the problem colour and wrapped beside the
-#      panel, and a red REC shows while recording.
+#      panel, and a red REC shows while recording;
+#   6. the panel and the view share the window: at 800x600 and 1280x720 the view (the cloth
+#      with it) is shown whole beside the panel, none of it under the panel;
+#   7. a refused edit (-5 typed into a stiffness) is said under that slider, whole.
 # Usage: window_e2e_test.sh WEFT PNG_DIFF SOURCE_DIR PNG_COLOUR_COUNT
 set -uo pipefail
 weft=$(realpath "$1")
@@ -30,7 +33,7 @@ for n in $(seq 90 130); do
   if [ ! -e "/tmp/.X$n-lock" ] && [ ! -e "/tmp/.X11-unix/X$n" ]; then display=":$n"; break; fi
 done
 [ -n "$display" ] || { echo "FAIL: no free X display"; exit 1; }
-Xvfb "$display" -screen 0 1024x768x24 -nolisten tcp >/dev/null 2>&1 &
+Xvfb "$display" -screen 0 1400x900x24 -nolisten tcp >/dev/null 2>&1 &
 xvfb_pid=$!
 for _ in $(seq 50); do [ -e "/tmp/.X11-unix/X${display#:}" ] && break; sleep 0.1; done
 export DISPLAY=$display
@@ -55,6 +58,11 @@ quit_weft() {
   for _ in $(seq 100); do kill -0 "$weft_pid" 2>/dev/null || break; sleep 0.1; done
   wait "$weft_pid"
 }
+# The window is 800 x 600: the panel takes its left 300 px (src/app/screen_layout.cpp), the
+# view the 500 x 600 beside it, with the sheet's centre at the view's centre, window pixel
+# (550, 300) (the camera's target is 2.5 cm above it). The camera looks straight at the sheet
+# from 1.6 m with a 50° vertical field of view: about 402 pixels per metre at the sheet.
+panel_right=300
 # x of particle (row, col) from a dump
 particle_x() { awk -F, -v r="$2" -v c="$3" 'NR > 1 && $1 == r && $2 == c { print $3 }' "$1"; }
 
@@ -77,14 +85,13 @@ check awk -v f="$changed" 'BEGIN { exit !(f > 0.05) }'
 check test -s "$work/rest/state.csv"
 
 # --- 2. space + mouse on the cloth pulls it ---------------------------------------------------
-# The camera looks straight at the sheet's centre from 1.6 m with a 50° field of view: about
-# 402 pixels per metre at the sheet, centre at (400, 300). Particle (12, 7) is at
-# (-0.025, -0.2) m: pixel (390, 390). The mouse drags it 0.5 m to the right.
+# Particle (12, 7) is at (-0.025, -0.2) m: pixel (540, 390). The mouse drags it 0.5 m to the
+# right.
 start_weft drag
-xdotool mousemove --window "$window" 390 390
+xdotool mousemove --window "$window" 540 390
 sleep 0.2
 xdotool keydown --window "$window" space
-for step in $(seq 1 10); do xdotool mousemove --window "$window" $((390 + 20 * step)) 390; sleep 0.05; done
+for step in $(seq 1 10); do xdotool mousemove --window "$window" $((540 + 20 * step)) 390; sleep 0.05; done
 sleep 1.0
 quit_weft   # still holding: the dump shows the cloth where the hand holds it
 xdotool keyup space
@@ -94,11 +101,12 @@ echo "dragged particle x: at rest $rest_x m, after the drag $drag_x m"
 check awk -v a="$rest_x" -v b="$drag_x" 'BEGIN { exit !(b - a > 0.15) }'
 
 # --- 3. space + mouse on the background grabs nothing -----------------------------------------
+# The sheet spans x = 399 to 701: x = 760 is right of it.
 start_weft miss
-xdotool mousemove --window "$window" 700 120
+xdotool mousemove --window "$window" 760 120
 sleep 0.2
 xdotool keydown --window "$window" space
-for step in $(seq 1 10); do xdotool mousemove --window "$window" 700 $((120 + 30 * step)); sleep 0.05; done
+for step in $(seq 1 10); do xdotool mousemove --window "$window" 760 $((120 + 30 * step)); sleep 0.05; done
 sleep 0.5
 xdotool keyup --window "$window" space
 quit_weft
@@ -108,15 +116,17 @@ echo "missed drag: largest difference from the undisturbed run $largest m"
 check awk -v d="$largest" 'BEGIN { exit !(d < 0.002) }'
 
 # --- 4. side by side, recorded, replayed ------------------------------------------------------
-# Two columns of 400 x 600: the sheet's centre is at (200, 300) in the left one (the main run,
-# symplectic Euler) and (600, 300) in the right one (RK4). The drag starts on the right copy.
+# The view beside the panel splits into two columns of 250 x 600 (issue 18, item 4: not the
+# window, half of which the panel covers): the sheet's centre is at window pixel (425, 300)
+# in the left one (the main run, symplectic Euler) and (675, 300) in the right one (RK4),
+# each column showing the middle 250 px of its sheet. The drag starts on the right copy.
 start_weft side --compare rk4 --record "$work/side/session.toml"
 xdotool key --window "$window" F12
 sleep 0.5
-xdotool mousemove --window "$window" 590 380
+xdotool mousemove --window "$window" 665 380
 sleep 0.2
 xdotool keydown --window "$window" space
-for step in $(seq 1 10); do xdotool mousemove --window "$window" $((590 + 15 * step)) 380; sleep 0.05; done
+for step in $(seq 1 10); do xdotool mousemove --window "$window" $((665 + 10 * step)) 380; sleep 0.05; done
 sleep 0.8
 xdotool key --window "$window" F12
 sleep 0.5
@@ -125,8 +135,8 @@ sleep 0.5
 quit_weft
 shots=("$work"/side/weft-screenshot-*.png)
 check test "${#shots[@]}" -eq 2
-left=$("$png_diff" "${shots[0]}" "${shots[1]}" 0 400)
-right=$("$png_diff" "${shots[0]}" "${shots[1]}" 400 800)
+left=$("$png_diff" "${shots[0]}" "${shots[1]}" 0 250)
+right=$("$png_diff" "${shots[0]}" "${shots[1]}" 250 500)
 echo "side by side: the drag changed $left of the main run's column and $right of the copy's"
 check awk -v f="$left" 'BEGIN { exit !(f > 0.01) }'
 check awk -v f="$right" 'BEGIN { exit !(f > 0.01) }'
@@ -142,15 +152,15 @@ check cmp -s "$work/side/state.csv" "$work/side/replayed.csv"
 # The hand's spring is inside the implicit system (and its goal within 3 m/s × h): a pull
 # away from the pinned top row and back past it, faster than the cloth can follow, must
 # neither diverge (no rollback, so dt is never halved) nor lose hold of the cloth. Particle
-# (1, 1) is at (-0.325, 0.35) m: pixel (269, 169).
+# (1, 1) is at (-0.325, 0.35) m: pixel (419, 169). The hand sweeps the view beside the panel.
 start_weft implicit --set solver.integrator=implicit-euler --set solver.dt=0.016666666666666666 \
   --set springs.bend.enabled=true
-xdotool mousemove --window "$window" 269 172
+xdotool mousemove --window "$window" 419 172
 sleep 0.2
 xdotool keydown --window "$window" space
 for round in 1 2 3; do
-  for step in $(seq 1 8); do xdotool mousemove --window "$window" $((269 + 60 * step)) $((172 + 50 * step)); sleep 0.03; done
-  for step in $(seq 1 8); do xdotool mousemove --window "$window" $((749 - 70 * step)) $((572 - 70 * step)); sleep 0.03; done
+  for step in $(seq 1 8); do xdotool mousemove --window "$window" $((419 + 45 * step)) $((172 + 50 * step)); sleep 0.03; done
+  for step in $(seq 1 8); do xdotool mousemove --window "$window" $((779 - 55 * step)) $((572 - 70 * step)); sleep 0.03; done
 done
 xdotool mousemove --window "$window" 700 550
 sleep 1.0
@@ -171,9 +181,8 @@ check awk -F, 'NR > 1 { for (i = 3; i <= 8; ++i) if ($i != $i + 0 || $i > 10 || 
 success_green="115 230 115"
 problem_orange="255 128 77"
 recording_red="255 64 64"
-# The panel opens at x = 10, 390 wide: the status lines belong right of x = 400. They sit at
-# the bottom, below the cloth (whose shading could match a colour): rows 480 to 600 are read.
-panel_right=400
+# The status lines belong in the view, right of the panel. They sit at the bottom, below the
+# cloth (whose shading could match a colour): rows 480 to 600 are read.
 # shoot_window NAME: the window as shown, panel and status lines included (Shift+F12), by the
 # run in $work/NAME; the image's path in $window_shot.
 shoot_window() {
@@ -220,6 +229,72 @@ quit_weft
 rec=$(pixels "$window_shot" "$recording_red" $panel_right 800)
 echo "recording: $rec REC-red pixels beside the panel"
 check test "$rec" -gt 20
+
+# --- 6. the panel and the view share the window --------------------------------------------
+# At each size the issue names, the view's screenshot (F12) is as wide as the window less the
+# panel (300 px at 800, 30 % = 384 px at 1280), and the window's screenshot (Shift+F12) shows
+# it whole right of the panel: every pixel of the cloth is seen, none is under the panel.
+png_width() { od -An -tu1 -j16 -N4 "$1" | awk '{ print $1 * 16777216 + $2 * 65536 + $3 * 256 + $4 }'; }
+for size in 800x600:300 1280x720:384; do
+  window_width=${size%%x*}
+  panel_width=${size##*:}
+  name=fit-${size%%:*}
+  start_weft "$name" --size "${size%%:*}"
+  xdotool key --window "$window" F12
+  sleep 0.5
+  view_shot=$(ls "$work/$name"/weft-screenshot-*.png | tail -1)
+  shoot_window "$name"
+  quit_weft
+  view_width=$(png_width "$view_shot")
+  shown=$("$png_diff" "$view_shot" "$window_shot" 0 "$view_width" "$panel_width")
+  echo "${size%%:*}: the view is $view_width px wide beside a $panel_width px panel; $shown of it differs from the window's pixels there"
+  check test "$view_width" -eq $((window_width - panel_width))
+  check awk -v f="$shown" 'BEGIN { exit !(f < 0.05) }'
+done
+
+# --- 7. a refused edit is said under its control ---------------------------------------------
+# Ctrl+click on the structural stiffness slider (the panel's first stiffness, at y = 318)
+# types a value; -5 is refused. The refusal must be said right under the slider (rows 326 to
+# 366), whole, inside the panel, and stay there (issue 18, item 3: it sat at the panel's
+# foot, cut off, out of sight) until the next edit, 700, which is taken.
+refusal_red="255 102 102"
+# type_into_slider X Y TEXT: Ctrl+click at (X, Y) and type TEXT, through the X server's own
+# input (the slider ignores clicks sent to the window alone). Each key and button is held
+# for 0.1 s: Dear ImGui 1.86 reads keys and buttons once a frame, and one pressed and let go
+# within a frame is lost.
+hold() { xdotool "$1"down "$2"; sleep 0.1; xdotool "$1"up "$2"; sleep 0.1; }
+type_into_slider() {
+  xdotool windowfocus --sync "$window"
+  xdotool mousemove --window "$window" "$1" "$2"
+  sleep 0.2
+  xdotool keydown ctrl
+  sleep 0.1
+  hold mouse 1
+  xdotool keyup ctrl
+  sleep 0.3
+  hold key ctrl+a   # the slider's text is selected already; this makes sure
+  xdotool type --delay 100 -- "$3"
+  hold key Return
+  sleep 0.5
+}
+refusal_pixels() { "$png_colour_count" "$window_shot" $refusal_red "$1" "$2" 326 366; }
+start_weft refuse
+type_into_slider 60 318 -5
+shoot_window refuse
+under_slider=$(refusal_pixels 0 $panel_right)
+beyond_panel=$(refusal_pixels $panel_right 800)
+sleep 3
+shoot_window refuse
+later=$(refusal_pixels 0 $panel_right)
+type_into_slider 60 318 700
+shoot_window refuse
+after_next_edit=$(refusal_pixels 0 800)
+quit_weft
+echo "refused -5: $under_slider refusal-red pixels under the slider, $beyond_panel beyond the panel; 3 s later $later; after the next edit $after_next_edit"
+check test "$under_slider" -gt 300
+check test "$beyond_panel" -eq 0
+check test "$later" -eq "$under_slider"
+check test "$after_next_edit" -eq 0
 
 echo "$passes passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -1,0 +1,32 @@
+// The panel's answer to its last edit: which control made it and, when the scene loader
+// refused the value, why. The panel draws the refusal right under that control, wrapped to
+// the panel's width, until the next edit (issue 18, item 3: written at the panel's foot, a
+// refusal sat below the visible area, cut off, and the value just snapped back).
+// ImGui-free, so the rule is tested.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace weft::app {
+
+class LastEdit {
+  public:
+    // An edit by `control` (a name the panel gives it: the setting's key, such as
+    // "springs.structural.stiffness") and the loader's error, or none when it was taken.
+    void answer(std::string_view control, const std::optional<std::string>& error);
+    // What to say under `control`: empty unless the last edit was that control's and was
+    // refused.
+    const std::string& refusal_under(std::string_view control) const;
+
+  private:
+    std::string control_;  // the control that made the last edit
+    std::string refusal_;  // its refusal as the panel says it; empty when it was taken
+};
+
+// The loader's error as the panel says it next to the control: "refused: " and the reason,
+// without the "error: --set KEY: " lead naming the setting the reader has just touched.
+std::string refusal_text(std::string_view error);
+
+}  // namespace weft::app

@@ -1,0 +1,48 @@
+// Where and how long the panel says an edit was refused (issue 18, item 3): under the
+// control that made it, until the next edit; in words without the command line's lead.
+// Truth: the loader's message for a negative stiffness, copied from `weft --set`.
+#include <gtest/gtest.h>
+
+#include "app/edit_answer.h"
+
+namespace weft::app {
+namespace {
+
+const std::string negative_stiffness =
+    "error: --set springs.structural.stiffness: springs.structural.stiffness must be >= 0, "
+    "got -5";
+
+TEST(EditAnswer, ARefusalIsSaidUnderTheControlThatMadeTheEditOnly) {
+    LastEdit last;
+    last.answer("springs.structural.stiffness", negative_stiffness);
+    EXPECT_EQ(last.refusal_under("springs.structural.stiffness"),
+              "refused: springs.structural.stiffness must be >= 0, got -5");
+    EXPECT_EQ(last.refusal_under("springs.shear.stiffness"), "");
+}
+
+TEST(EditAnswer, ARefusalStaysUntilTheNextEdit) {
+    LastEdit last;
+    last.answer("springs.structural.stiffness", negative_stiffness);
+    EXPECT_NE(last.refusal_under("springs.structural.stiffness"), "");  // frame after frame
+    EXPECT_NE(last.refusal_under("springs.structural.stiffness"), "");
+    last.answer("forces.air_drag", std::nullopt);
+    EXPECT_EQ(last.refusal_under("springs.structural.stiffness"), "");
+    EXPECT_EQ(last.refusal_under("forces.air_drag"), "");
+}
+
+TEST(EditAnswer, ATakenEditOfTheSameControlClearsItsRefusal) {
+    LastEdit last;
+    last.answer("cloth.particle_mass", "error: --set cloth.particle_mass: must be > 0, got 0");
+    last.answer("cloth.particle_mass", std::nullopt);
+    EXPECT_EQ(last.refusal_under("cloth.particle_mass"), "");
+}
+
+TEST(EditAnswer, AMessageWithoutTheCommandLinesLeadIsKeptWhole) {
+    EXPECT_EQ(refusal_text("drag radius must be in (0, 10] m, got 20"),
+              "refused: drag radius must be in (0, 10] m, got 20");
+    EXPECT_EQ(refusal_text("error: panel: colliders[0].restitution must be in [0, 1], got 1.5"),
+              "refused: panel: colliders[0].restitution must be in [0, 1], got 1.5");
+}
+
+}  // namespace
+}  // namespace weft::app

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <glm/geometric.hpp>
 
@@ -15,6 +16,19 @@ namespace {
 // the conversion; cells that far out only ever hold the particles that flew there.
 long long cell_coordinate(double position, double cell_size) {
     return static_cast<long long>(std::clamp(std::floor(position / cell_size), -1e15, 1e15));
+}
+
+// Work below this many particles stays on the calling thread (the hand-off costs more).
+constexpr std::size_t min_particles_for_threads = 4096;
+
+// Runs body(begin, end) over [0, items), split between the pool's threads when the cloth
+// has enough particles to pay for the hand-off.
+template <class Body>
+void split(std::size_t items, std::size_t particles, WorkerPool* pool, Body&& body) {
+    if (pool && pool->thread_count() > 1 && particles >= min_particles_for_threads)
+        pool->parallel_for(items, body);
+    else
+        body(0, items);
 }
 
 // The thirteen neighbour cells ahead of a cell, in (x, y, z) order: one of each opposite pair
@@ -45,7 +59,7 @@ std::size_t SelfCollision::hash_cell(long long cx, long long cy, long long cz) c
     return static_cast<std::size_t>(h & slot_mask_);
 }
 
-void SelfCollision::rebuild_hash(const Cloth& cloth) {
+void SelfCollision::rebuild_hash(const Cloth& cloth, WorkerPool* pool) {
     const std::size_t count = cloth.particle_count();
     // At least twice as many slots as particles keeps the chains short.
     std::size_t slots = 1;
@@ -55,13 +69,16 @@ void SelfCollision::rebuild_hash(const Cloth& cloth) {
     cell_entries_.resize(count);
     cells_.resize(count);
     slots_.resize(count);
-    for (std::size_t p = 0; p < count; ++p) {
-        const Vec3& x = cloth.positions[p];
-        cells_[p] = {cell_coordinate(x.x, reach()), cell_coordinate(x.y, reach()),
-                     cell_coordinate(x.z, reach())};
-        slots_[p] = static_cast<std::uint32_t>(hash_cell(cells_[p][0], cells_[p][1], cells_[p][2]));
-        ++cell_start_[slots_[p]];
-    }
+    split(count, count, pool, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t p = begin; p < end; ++p) {
+            const Vec3& x = cloth.positions[p];
+            cells_[p] = {cell_coordinate(x.x, reach()), cell_coordinate(x.y, reach()),
+                         cell_coordinate(x.z, reach())};
+            slots_[p] =
+                static_cast<std::uint32_t>(hash_cell(cells_[p][0], cells_[p][1], cells_[p][2]));
+        }
+    });
+    for (std::size_t p = 0; p < count; ++p) ++cell_start_[slots_[p]];
     for (std::size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
     // Fill from the back so each cell's entries end up in ascending particle order.
     for (std::size_t p = count; p-- > 0;)
@@ -81,26 +98,33 @@ bool SelfCollision::joined(std::uint32_t a, std::uint32_t b) const {
     return std::binary_search(joined_pairs_.begin(), joined_pairs_.end(), edge_key(a, b));
 }
 
-bool SelfCollision::moved_beyond_margin(const Cloth& cloth) const {
+bool SelfCollision::moved_beyond_margin(const Cloth& cloth, WorkerPool* pool) const {
     if (built_at_.size() != cloth.particle_count()) return true;
     const double limit = 0.25 * margin() * margin();  // (margin / 2)²
-    for (std::size_t p = 0; p < built_at_.size(); ++p) {
-        const Vec3 moved = cloth.positions[p] - built_at_[p];
-        if (!(glm::dot(moved, moved) <= limit)) return true;  // NaN too
-    }
-    return false;
+    std::atomic<bool> moved{false};                   // an "any": the same whatever the split
+    split(built_at_.size(), built_at_.size(), pool, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t p = begin; p < end; ++p) {
+            const Vec3 step = cloth.positions[p] - built_at_[p];
+            if (!(glm::dot(step, step) <= limit)) {  // NaN too
+                moved.store(true, std::memory_order_relaxed);
+                return;
+            }
+        }
+    });
+    return moved.load(std::memory_order_relaxed);
 }
 
-void SelfCollision::rebuild_candidates(const Cloth& cloth) {
+void SelfCollision::rebuild_candidates(const Cloth& cloth, WorkerPool* pool) {
     candidates_.clear();
-    rebuild_hash(cloth);
+    rebuild_hash(cloth, pool);
     const double reach_squared = reach() * reach();
     // Each pair of particles in neighbouring cells is looked at once: from the particle
     // whose cell the other's is ahead of (the thirteen cells ahead: half of the 26, one of
     // each opposite pair), or, in one cell, from the lower index. A slot of the hash table
     // can hold other cells too (hash collisions), so a particle counts only in its own cell:
     // no pair is found twice.
-    auto look_at = [&](std::size_t p, const std::array<long long, 3>& cell, bool same_cell) {
+    auto look_at = [&](std::vector<std::pair<std::uint32_t, std::uint32_t>>& found, std::size_t p,
+                       const std::array<long long, 3>& cell, bool same_cell) {
         const std::size_t slot = hash_cell(cell[0], cell[1], cell[2]);
         for (std::uint32_t e = cell_start_[slot]; e < cell_start_[slot + 1]; ++e) {
             const std::uint32_t q = cell_entries_[e];
@@ -112,22 +136,37 @@ void SelfCollision::rebuild_candidates(const Cloth& cloth) {
             if (glm::dot(d, d) >= reach_squared) continue;
             const auto a = static_cast<std::uint32_t>(std::min<std::size_t>(p, q));
             const auto b = static_cast<std::uint32_t>(std::max<std::size_t>(p, q));
-            if (!joined(a, b)) candidates_.emplace_back(a, b);
+            if (!joined(a, b)) found.emplace_back(a, b);
         }
     };
-    for (std::size_t p = 0; p < cloth.particle_count(); ++p) {
-        const std::array<long long, 3>& cell = cells_[p];
-        look_at(p, cell, true);
-        for (const std::array<int, 3>& ahead : cells_ahead)
-            look_at(p, {cell[0] + ahead[0], cell[1] + ahead[1], cell[2] + ahead[2]}, false);
-    }
+    // The particles in a fixed number of chunks, each with its own list, so threads never
+    // share one; the lists are joined in chunk order and sorted, the same for any split.
+    const std::size_t count = cloth.particle_count();
+    found_by_chunk_.resize(search_chunks);
+    split(search_chunks, count, pool, [&](std::size_t first_chunk, std::size_t last_chunk) {
+        for (std::size_t chunk = first_chunk; chunk < last_chunk; ++chunk) {
+            std::vector<std::pair<std::uint32_t, std::uint32_t>>& found = found_by_chunk_[chunk];
+            found.clear();
+            for (std::size_t p = count * chunk / search_chunks;
+                 p < count * (chunk + 1) / search_chunks; ++p) {
+                const std::array<long long, 3>& cell = cells_[p];
+                look_at(found, p, cell, true);
+                for (const std::array<int, 3>& ahead : cells_ahead)
+                    look_at(found, p, {cell[0] + ahead[0], cell[1] + ahead[1], cell[2] + ahead[2]},
+                            false);
+            }
+        }
+    });
+    for (const auto& found : found_by_chunk_)
+        candidates_.insert(candidates_.end(), found.begin(), found.end());
     // In ascending order, the order the Gauss–Seidel pass resolves them in.
     std::sort(candidates_.begin(), candidates_.end());
     built_at_ = cloth.positions;
 }
 
 void SelfCollision::find_pairs(const Cloth& cloth,
-                               std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs) {
+                               std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs,
+                               WorkerPool* pool) {
     pairs.clear();
     if (cloth.particle_count() == 0) return;
     bool stale = false;
@@ -135,7 +174,7 @@ void SelfCollision::find_pairs(const Cloth& cloth,
         rebuild_joined_pairs(cloth);
         stale = true;  // a torn spring's ends may now collide
     }
-    if (stale || moved_beyond_margin(cloth)) rebuild_candidates(cloth);
+    if (stale || moved_beyond_margin(cloth, pool)) rebuild_candidates(cloth, pool);
     const double thickness_squared = thickness_ * thickness_;
     for (const auto& [a, b] : candidates_) {
         const Vec3 d = cloth.positions[b] - cloth.positions[a];
@@ -143,10 +182,11 @@ void SelfCollision::find_pairs(const Cloth& cloth,
     }
 }
 
-std::size_t SelfCollision::resolve(Cloth& cloth, std::span<const Collider> colliders) {
+std::size_t SelfCollision::resolve(Cloth& cloth, std::span<const Collider> colliders,
+                                   WorkerPool* pool) {
     std::size_t first_pass_pairs = 0;
     for (int pass = 0; pass < max_passes; ++pass) {
-        find_pairs(cloth, pairs_);
+        find_pairs(cloth, pairs_, pool);
         if (pass == 0) first_pass_pairs = pairs_.size();
         if (pairs_.empty()) break;
         const double deepest = separate_pairs(cloth);

@@ -19,6 +19,7 @@
 
 #include <span>
 
+#include "parallel/worker_pool.h"
 #include "sim/cloth.h"
 #include "sim/colliders.h"
 
@@ -31,8 +32,10 @@ class SelfCollision {
     double thickness() const { return thickness_; }  // m
 
     // Every pair (i < j) closer than the thickness and not joined by a spring, ascending.
-    void find_pairs(const Cloth& cloth,
-                    std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs);
+    // The list's rebuild and its check are split between the pool's threads; the pairs are
+    // the same for any thread count.
+    void find_pairs(const Cloth& cloth, std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs,
+                    WorkerPool* pool = nullptr);
 
     // Pushes each close pair apart to the thickness (half each, or all to the free one) and
     // removes their approaching relative normal velocity. Returns the pairs resolved in the
@@ -46,7 +49,8 @@ class SelfCollision {
     // is left or `max_passes` are done. The solids go last: they are hard, never left
     // violated; what is left over is a small overlap between layers, which the next step's
     // passes take up.
-    std::size_t resolve(Cloth& cloth, std::span<const Collider> colliders = {});
+    std::size_t resolve(Cloth& cloth, std::span<const Collider> colliders = {},
+                        WorkerPool* pool = nullptr);
     static constexpr int max_passes = 8;
     static constexpr double settled_overlap = 1e-3;  // × thickness: a pass this deep is the last
 
@@ -57,9 +61,10 @@ class SelfCollision {
     double reach() const { return thickness_ + margin(); }  // m: the list's radius
     // True when some particle has moved more than half the margin since the list was built
     // (or the list does not fit the cloth).
-    bool moved_beyond_margin(const Cloth& cloth) const;
-    void rebuild_candidates(const Cloth& cloth);
-    void rebuild_hash(const Cloth& cloth);
+    bool moved_beyond_margin(const Cloth& cloth, WorkerPool* pool) const;
+    void rebuild_candidates(const Cloth& cloth, WorkerPool* pool);
+    void rebuild_hash(const Cloth& cloth, WorkerPool* pool);
+    static constexpr std::size_t search_chunks = 16;  // fixed: the split never shows
     void rebuild_joined_pairs(const Cloth& cloth);
     bool joined(std::uint32_t a, std::uint32_t b) const;
     std::size_t hash_cell(long long cx, long long cy, long long cz) const;
@@ -76,6 +81,7 @@ class SelfCollision {
     // The Verlet list: unjoined pairs closer than reach() at built_at_, ascending.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> candidates_;
     std::vector<Vec3> built_at_;  // m: the positions the list was built at
+    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found_by_chunk_;
 };
 
 }  // namespace weft

@@ -73,7 +73,8 @@ StepReport Simulation::step() {
         corrections += limit_strain(cloth_, *scene_.strain_limit_max_stretch, dt_);
     if (!colliders_.empty()) report.contacts += resolve_impulse_contacts(colliders_, cloth_);
     // Self-collision goes after the contacts and keeps the particles out of the solids itself.
-    if (self_collision_) report.contacts += self_collision_->resolve(cloth_, colliders_);
+    if (self_collision_)
+        report.contacts += self_collision_->resolve(cloth_, colliders_, pool_.get());
     corrections += report.contacts;
     time_ += dt_;
     ++steps_taken_;

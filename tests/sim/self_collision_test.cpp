@@ -32,10 +32,10 @@ Pairs brute_force_pairs(const Cloth& cloth, double thickness) {
 }
 
 // A sheet crumpled at random into a small box: many close pairs.
-Cloth crumpled_sheet(unsigned seed) {
+Cloth crumpled_sheet(unsigned seed, int side = 12) {
     Scene scene;
-    scene.cloth.rows = 12;
-    scene.cloth.cols = 12;
+    scene.cloth.rows = side;
+    scene.cloth.cols = side;
     scene.shear.enabled = true;
     Cloth cloth = build_grid_cloth(scene);
     std::mt19937 rng(seed);
@@ -76,6 +76,21 @@ TEST(SelfCollision, TheKeptListFindsExactlyTheBruteForcePairsAsParticlesMove) {
         for (Vec3& x : cloth.positions) x += Vec3(nudge(rng), nudge(rng), nudge(rng));
     }
     EXPECT_GT(compared_pairs, 400u);
+}
+
+TEST(SelfCollision, OneTwoAndThreeThreadsFindTheSamePairsAsBruteForce) {
+    // 4096 particles: enough for the list's rebuild to be split between threads.
+    const Cloth cloth = crumpled_sheet(6, 64);
+    const double thickness = 0.004;
+    const Pairs expected = brute_force_pairs(cloth, thickness);
+    ASSERT_GT(expected.size(), 100u);
+    for (const int threads : {1, 2, 3}) {
+        WorkerPool pool(threads);
+        SelfCollision pass(thickness);
+        Pairs found;
+        pass.find_pairs(cloth, found, &pool);
+        EXPECT_EQ(found, expected) << threads << " threads";
+    }
 }
 
 TEST(SelfCollision, TornNeighboursCollideAgain) {

@@ -471,7 +471,7 @@ bool DemoState::replay_matches() const {
 Scene DemoState::scene_to_save() const {
     Scene saved = simulation.scene();
     saved.camera.position = to_vec3d(rig.position);
-    saved.camera.target = to_vec3d(rig.position + rig.forward());
+    saved.camera.target = to_vec3d(rig.target());
     saved.camera.fov_degrees = static_cast<double>(rig.fov_degrees);
     return saved;
 }

@@ -226,7 +226,7 @@ bool handle_event(const SDL_Event& event, DemoState& state, Window& w) {
         if (event.button.button == SDL_BUTTON_LEFT)
             state.grab(p.at, p.view, p.column);
         else if (event.button.button == SDL_BUTTON_RIGHT)
-            state.start_cut(p.at);
+            state.start_cut(p.at, p.view, p.column);
         else if (event.button.button == SDL_BUTTON_MIDDLE)
             state.toggle_pin(p.at, p.view, p.column);
     }

@@ -17,11 +17,13 @@ CameraRig CameraRig::looking_at(const glm::vec3& position, const glm::vec3& targ
     rig.position = position;
     rig.fov_degrees = fov_degrees;
     const glm::vec3 direction = target - position;
-    if (glm::length(direction) > 0.0f) {
-        const glm::vec3 d = glm::normalize(direction);
+    const float distance = glm::length(direction);
+    if (distance > 0.0f) {
+        const glm::vec3 d = direction / distance;
         rig.yaw = std::atan2(-d.x, -d.z);
         rig.pitch = std::clamp(std::asin(std::clamp(d.y, -1.0f, 1.0f)), -max_pitch, max_pitch);
     }
+    rig.target_distance = std::clamp(distance, min_target_distance, max_target_distance);
     return rig;
 }
 
@@ -33,6 +35,10 @@ glm::vec3 CameraRig::right() const {
     return {std::cos(yaw), 0.0f, -std::sin(yaw)};
 }
 
+glm::vec3 CameraRig::target() const {
+    return position + target_distance * forward();
+}
+
 void CameraRig::move(const glm::vec3& right_up_forward, float speed, float seconds) {
     const float distance = speed * seconds;
     position += distance *
@@ -40,13 +46,20 @@ void CameraRig::move(const glm::vec3& right_up_forward, float speed, float secon
                  right_up_forward.z * forward());
 }
 
-void CameraRig::turn(float yaw_rate, float pitch_rate, float seconds) {
-    yaw += yaw_rate * seconds;
-    pitch = std::clamp(pitch + pitch_rate * seconds, -max_pitch, max_pitch);
+void CameraRig::orbit(float rightward_rate, float upward_rate, float seconds) {
+    // The camera sits at target - distance·forward: raising yaw swings it to its right, and
+    // lowering pitch (looking further down) lifts it over the target.
+    const glm::vec3 centre = target();
+    yaw += rightward_rate * seconds;
+    pitch = std::clamp(pitch - upward_rate * seconds, -max_pitch, max_pitch);
+    position = centre - target_distance * forward();
 }
 
-void CameraRig::zoom(float notches, float distance_to_target) {
-    position += notches * std::max(0.1f, 0.1f * distance_to_target) * forward();
+void CameraRig::zoom(float notches) {
+    const glm::vec3 centre = target();
+    target_distance = std::clamp(target_distance * std::pow(zoom_kept_per_notch, notches),
+                                 min_target_distance, max_target_distance);
+    position = centre - target_distance * forward();
 }
 
 raster::Camera CameraRig::camera() const {

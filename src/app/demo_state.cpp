@@ -328,18 +328,25 @@ void DemoState::let_go() {
     hand.dragging = false;
 }
 
-void DemoState::start_cut(const glm::vec2& cursor) {
+void DemoState::start_cut(const glm::vec2& cursor, ViewSize view, int run_index) {
     hand.cutting = true;
     hand.last_cursor = cursor;
+    hand.last_on_screen =
+        particles_on_screen(run(run_index).cloth(), rig.camera(), view.width, view.height);
 }
 
 std::size_t DemoState::cut_to(const glm::vec2& cursor, ViewSize view, int run_index) {
     if (!hand.cutting || replaying) return 0;
     ClothEvent event;
     event.kind = ClothEvent::Kind::cut;
-    event.springs = springs_along_stroke(run(run_index).cloth(), rig.camera(), view.width,
-                                         view.height, hand.last_cursor, cursor);
+    const Cloth& cloth = run(run_index).cloth();
+    ScreenPoints on_screen = particles_on_screen(cloth, rig.camera(), view.width, view.height);
+    // A reset or another scene since the last motion: nothing to compare with.
+    if (hand.last_on_screen.size() != on_screen.size()) hand.last_on_screen = on_screen;
+    event.springs =
+        springs_along_stroke(cloth, hand.last_on_screen, on_screen, hand.last_cursor, cursor);
     hand.last_cursor = cursor;
+    hand.last_on_screen = std::move(on_screen);
     if (event.springs.empty()) return 0;
     const std::size_t before = simulation.cloth().spring_count();
     perform(event);
@@ -348,6 +355,7 @@ std::size_t DemoState::cut_to(const glm::vec2& cursor, ViewSize view, int run_in
 
 void DemoState::end_cut() {
     hand.cutting = false;
+    hand.last_on_screen.clear();
 }
 
 bool DemoState::toggle_pin(const glm::vec2& cursor, ViewSize view, int run_index) {
@@ -471,7 +479,7 @@ bool DemoState::replay_matches() const {
 Scene DemoState::scene_to_save() const {
     Scene saved = simulation.scene();
     saved.camera.position = to_vec3d(rig.position);
-    saved.camera.target = to_vec3d(rig.position + rig.forward());
+    saved.camera.target = to_vec3d(rig.target());
     saved.camera.fov_degrees = static_cast<double>(rig.fov_degrees);
     return saved;
 }

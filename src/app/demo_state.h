@@ -14,6 +14,7 @@
 
 #include "app/camera_rig.h"
 #include "app/cloth_event.h"
+#include "app/hand_tools.h"
 #include "app/session_record.h"
 #include "app/step_clock.h"
 #include "sim/scene_loader.h"
@@ -42,6 +43,9 @@ struct Hand {
     Vec3 anchor{0.0};  // m, the grabbed point: the drag plane goes through it
     bool cutting = false;
     glm::vec2 last_cursor{0.0f};  // px, where the cut stroke was at the last motion
+    // The particles in the window at the last motion, for a stroke's run: a cut judges how
+    // cursor and cloth moved since then, not only where the cloth is now.
+    ScreenPoints last_on_screen;
 };
 
 // The view the cursor is in: pixels, origin top left.
@@ -164,7 +168,7 @@ struct DemoState {
     bool grab(const glm::vec2& cursor, ViewSize view, int run_index = 0);
     void pull(const glm::vec2& cursor, ViewSize view);
     void let_go();
-    void start_cut(const glm::vec2& cursor);
+    void start_cut(const glm::vec2& cursor, ViewSize view, int run_index = 0);
     std::size_t cut_to(const glm::vec2& cursor, ViewSize view, int run_index = 0);
     void end_cut();
     bool toggle_pin(const glm::vec2& cursor, ViewSize view, int run_index = 0);

@@ -226,7 +226,7 @@ bool handle_event(const SDL_Event& event, DemoState& state, Window& w) {
         if (event.button.button == SDL_BUTTON_LEFT)
             state.grab(p.at, p.view, p.column);
         else if (event.button.button == SDL_BUTTON_RIGHT)
-            state.start_cut(p.at);
+            state.start_cut(p.at, p.view, p.column);
         else if (event.button.button == SDL_BUTTON_MIDDLE)
             state.toggle_pin(p.at, p.view, p.column);
     }
@@ -240,7 +240,7 @@ bool handle_event(const SDL_Event& event, DemoState& state, Window& w) {
         state.cut_to(hand_point(state, w), view, w.hand_column);
     }
     if (event.type == SDL_MOUSEWHEEL && !io.WantCaptureMouse)
-        state.rig.zoom(static_cast<float>(event.wheel.y), 1.5f);
+        state.rig.zoom(static_cast<float>(event.wheel.y));
     return true;
 }
 
@@ -271,9 +271,11 @@ void move_camera(DemoState& state, double seconds) {
         return;
     }
     state.rig.move(direction, 1.0f, static_cast<float>(seconds));  // 1 m/s
-    const float yaw = float(keys[SDL_SCANCODE_LEFT]) - float(keys[SDL_SCANCODE_RIGHT]);
-    const float pitch = float(keys[SDL_SCANCODE_UP]) - float(keys[SDL_SCANCODE_DOWN]);
-    state.rig.turn(1.2f * yaw, 1.2f * pitch, static_cast<float>(seconds));  // rad/s
+    // Arrows move the camera around what it looks at, the way the arrow points.
+    const float rightward = float(keys[SDL_SCANCODE_RIGHT]) - float(keys[SDL_SCANCODE_LEFT]);
+    const float upward = float(keys[SDL_SCANCODE_UP]) - float(keys[SDL_SCANCODE_DOWN]);
+    state.rig.orbit(CameraRig::orbit_rate * rightward, CameraRig::orbit_rate * upward,
+                    static_cast<float>(seconds));
 }
 
 // ---- drawing --------------------------------------------------------------------------------

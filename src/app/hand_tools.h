@@ -24,18 +24,38 @@ std::optional<RayHit> cloth_under_cursor(const Cloth& cloth, const raster::Camer
 std::optional<Vec3> point_on_grab_plane(const raster::Camera& camera, int width, int height,
                                         const glm::vec2& window_point, const Vec3& anchor);
 
-// Whether the window segments a0-a1 and b0-b1 cross.
-bool segments_cross(const glm::vec2& a0, const glm::vec2& a1, const glm::vec2& b0,
-                    const glm::vec2& b1);
+// Each particle's place in the window (none for those behind the camera).
+using ScreenPoints = std::vector<std::optional<glm::vec2>>;
+ScreenPoints particles_on_screen(const Cloth& cloth, const raster::Camera& camera, int width,
+                                 int height);
 
-// The springs whose on-screen image crosses the cursor's stroke from `from` to `to`, as
-// ascending edge keys (topology_edits.h).
+// A spring's image in the window, from end a to end b.
+struct ScreenSegment {
+    glm::vec2 a;
+    glm::vec2 b;
+};
+
+// Whether the cursor, going straight from `from` to `to` while a spring's image moved
+// straight from `before` to `now` over the same time, passed over the spring (touching it
+// counts). With `before` equal to `now` this is whether two segments cross.
+bool cursor_passes_spring(const glm::vec2& from, const glm::vec2& to, const ScreenSegment& before,
+                          const ScreenSegment& now);
+
+// The springs the cursor passed over going from `from` to `to`, while the particles moved
+// from `before` to `now` in the window, as ascending edge keys (topology_edits.h). The cloth
+// moves between two motion events; testing the stroke against where it is now alone let a
+// spring swinging toward the cursor jump from ahead of it to behind it unseen.
+std::vector<std::uint64_t> springs_along_stroke(const Cloth& cloth, const ScreenPoints& before,
+                                                const ScreenPoints& now, const glm::vec2& from,
+                                                const glm::vec2& to);
+
+// The same for a cloth standing still under the stroke.
 std::vector<std::uint64_t> springs_along_stroke(const Cloth& cloth, const raster::Camera& camera,
                                                 int width, int height, const glm::vec2& from,
                                                 const glm::vec2& to);
 
-// Cuts the springs whose on-screen image crosses the cursor's stroke from `from` to `to`.
-// Returns the number cut.
+// Cuts the springs whose on-screen image crosses the cursor's stroke from `from` to `to`, the
+// cloth standing still. Returns the number cut.
 std::size_t cut_along_stroke(Simulation& simulation, const raster::Camera& camera, int width,
                              int height, const glm::vec2& from, const glm::vec2& to);
 

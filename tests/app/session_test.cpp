@@ -51,7 +51,7 @@ void play_a_busy_session(DemoState& state) {
     frames(20);
     std::size_t cut = 0;
     for (float y = 150.0f; y < 500.0f; y += 50.0f) {
-        state.start_cut({0.0f, y});
+        state.start_cut({0.0f, y}, view);
         for (int move = 1; move <= 10; ++move)
             cut += state.cut_to({80.0f * static_cast<float>(move), y + 10.0f}, view);
         state.end_cut();
@@ -94,7 +94,7 @@ TEST(Session, AReplayEndsInTheRecordedStateBitForBit) {
     // The hand and the panel wait while a replay runs, and come back after it.
     const std::uint64_t replayed = hash_state(player.simulation.cloth());
     player.reset_simulation();
-    player.start_cut({0.0f, 0.0f});
+    player.start_cut({0.0f, 0.0f}, view);
     player.cut_to({800.0f, 600.0f}, view);
     EXPECT_TRUE(player.change({"springs.structural.stiffness=100"}).has_value());
     EXPECT_EQ(hash_state(player.simulation.cloth()), replayed);
@@ -212,7 +212,7 @@ TEST(SideBySide, ACopyWithTheSameMethodStaysIdenticalThroughTheSameHand) {
         EXPECT_TRUE(state.companions[1].simulation.drag().active());
     }
     state.let_go();
-    state.start_cut({350.0f, 250.0f});
+    state.start_cut({350.0f, 250.0f}, view, 2);
     state.cut_to({450.0f, 350.0f}, view, 2);
     state.toggle_pin({400.0f, 300.0f}, view);
     ASSERT_FALSE(state.change({"springs.structural.stiffness=600"}));

@@ -67,6 +67,17 @@ class WorkerPool {
     std::condition_variable wake_;
 };
 
+// Runs body(begin, end) over [0, count): split between the pool's threads when there is a
+// pool with more than one thread and the caller judges the work `worth_threads` (a hand-off
+// costs microseconds), else on the calling thread in one call (none when count is 0).
+template <class Body>
+void parallel_for_if(WorkerPool* pool, bool worth_threads, std::size_t count, Body&& body) {
+    if (pool && pool->thread_count() > 1 && worth_threads)
+        pool->parallel_for(count, body);
+    else if (count > 0)
+        body(std::size_t{0}, count);
+}
+
 // Threads to use by default: the WEFT_THREADS environment variable if set (>= 1), else the
 // machine's hardware threads.
 int default_thread_count();

@@ -37,10 +37,7 @@ constexpr std::size_t min_items_for_threads = 8192;
 
 template <class Body>
 void for_ranges(WorkerPool* pool, std::size_t count, Body&& body) {
-    if (pool && pool->thread_count() > 1 && count >= min_items_for_threads)
-        pool->parallel_for(count, body);
-    else if (count > 0)
-        body(std::size_t{0}, count);
+    parallel_for_if(pool, count >= min_items_for_threads, count, body);
 }
 
 // True if any of the values is infinite or NaN: x - x is 0 for a finite x and NaN

@@ -21,16 +21,6 @@ long long cell_coordinate(double position, double cell_size) {
 // Work below this many particles stays on the calling thread (the hand-off costs more).
 constexpr std::size_t min_particles_for_threads = 4096;
 
-// Runs body(begin, end) over [0, items), split between the pool's threads when the cloth
-// has enough particles to pay for the hand-off.
-template <class Body>
-void split(std::size_t items, std::size_t particles, WorkerPool* pool, Body&& body) {
-    if (pool && pool->thread_count() > 1 && particles >= min_particles_for_threads)
-        pool->parallel_for(items, body);
-    else
-        body(0, items);
-}
-
 // The thirteen neighbour cells ahead of a cell, in (x, y, z) order: one of each opposite pair
 // of the 26 around it.
 constexpr std::array<std::array<int, 3>, 13> cells_ahead = {{{1, -1, -1},
@@ -69,15 +59,16 @@ void SelfCollision::rebuild_hash(const Cloth& cloth, WorkerPool* pool) {
     cell_entries_.resize(count);
     cells_.resize(count);
     slots_.resize(count);
-    split(count, count, pool, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t p = begin; p < end; ++p) {
-            const Vec3& x = cloth.positions[p];
-            cells_[p] = {cell_coordinate(x.x, reach()), cell_coordinate(x.y, reach()),
-                         cell_coordinate(x.z, reach())};
-            slots_[p] =
-                static_cast<std::uint32_t>(hash_cell(cells_[p][0], cells_[p][1], cells_[p][2]));
-        }
-    });
+    parallel_for_if(
+        pool, count >= min_particles_for_threads, count, [&](std::size_t begin, std::size_t end) {
+            for (std::size_t p = begin; p < end; ++p) {
+                const Vec3& x = cloth.positions[p];
+                cells_[p] = {cell_coordinate(x.x, reach()), cell_coordinate(x.y, reach()),
+                             cell_coordinate(x.z, reach())};
+                slots_[p] =
+                    static_cast<std::uint32_t>(hash_cell(cells_[p][0], cells_[p][1], cells_[p][2]));
+            }
+        });
     for (std::size_t p = 0; p < count; ++p) ++cell_start_[slots_[p]];
     for (std::size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
     // Fill from the back so each cell's entries end up in ascending particle order.
@@ -102,15 +93,16 @@ bool SelfCollision::moved_beyond_margin(const Cloth& cloth, WorkerPool* pool) co
     if (built_at_.size() != cloth.particle_count()) return true;
     const double limit = 0.25 * margin() * margin();  // (margin / 2)²
     std::atomic<bool> moved{false};                   // an "any": the same whatever the split
-    split(built_at_.size(), built_at_.size(), pool, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t p = begin; p < end; ++p) {
-            const Vec3 step = cloth.positions[p] - built_at_[p];
-            if (!(glm::dot(step, step) <= limit)) {  // NaN too
-                moved.store(true, std::memory_order_relaxed);
-                return;
-            }
-        }
-    });
+    parallel_for_if(pool, built_at_.size() >= min_particles_for_threads, built_at_.size(),
+                    [&](std::size_t begin, std::size_t end) {
+                        for (std::size_t p = begin; p < end; ++p) {
+                            const Vec3 step = cloth.positions[p] - built_at_[p];
+                            if (!(glm::dot(step, step) <= limit)) {  // NaN too
+                                moved.store(true, std::memory_order_relaxed);
+                                return;
+                            }
+                        }
+                    });
     return moved.load(std::memory_order_relaxed);
 }
 
@@ -143,20 +135,24 @@ void SelfCollision::rebuild_candidates(const Cloth& cloth, WorkerPool* pool) {
     // share one; the lists are joined in chunk order and sorted, the same for any split.
     const std::size_t count = cloth.particle_count();
     found_by_chunk_.resize(search_chunks);
-    split(search_chunks, count, pool, [&](std::size_t first_chunk, std::size_t last_chunk) {
-        for (std::size_t chunk = first_chunk; chunk < last_chunk; ++chunk) {
-            std::vector<std::pair<std::uint32_t, std::uint32_t>>& found = found_by_chunk_[chunk];
-            found.clear();
-            for (std::size_t p = count * chunk / search_chunks;
-                 p < count * (chunk + 1) / search_chunks; ++p) {
-                const std::array<long long, 3>& cell = cells_[p];
-                look_at(found, p, cell, true);
-                for (const std::array<int, 3>& ahead : cells_ahead)
-                    look_at(found, p, {cell[0] + ahead[0], cell[1] + ahead[1], cell[2] + ahead[2]},
-                            false);
+    parallel_for_if(
+        pool, count >= min_particles_for_threads, search_chunks,
+        [&](std::size_t first_chunk, std::size_t last_chunk) {
+            for (std::size_t chunk = first_chunk; chunk < last_chunk; ++chunk) {
+                std::vector<std::pair<std::uint32_t, std::uint32_t>>& found =
+                    found_by_chunk_[chunk];
+                found.clear();
+                for (std::size_t p = count * chunk / search_chunks;
+                     p < count * (chunk + 1) / search_chunks; ++p) {
+                    const std::array<long long, 3>& cell = cells_[p];
+                    look_at(found, p, cell, true);
+                    for (const std::array<int, 3>& ahead : cells_ahead)
+                        look_at(found, p,
+                                {cell[0] + ahead[0], cell[1] + ahead[1], cell[2] + ahead[2]},
+                                false);
+                }
             }
-        }
-    });
+        });
     for (const auto& found : found_by_chunk_)
         candidates_.insert(candidates_.end(), found.begin(), found.end());
     // In ascending order, the order the Gauss–Seidel pass resolves them in.

@@ -137,6 +137,7 @@ void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera
     // would transform all their vertices again, which costs more than drawing them once.
     auto draw_lines = [&] {
         raster::LineStyle lines;
+        lines.on_surface = true;  // all of them lie in the cloth's surface
         if (options.wireframe)
             raster::draw_indexed_lines(framebuffer, camera, view.positions(),
                                        view.wireframe_edges(), raster::Rgba8{20, 20, 24, 255},

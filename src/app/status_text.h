@@ -23,6 +23,12 @@ std::string linear_solve_text(const Simulation::LinearSolve& solve);
 // solve no system.
 std::optional<std::string> linear_solve_text(const Simulation& simulation);
 
+// The panel's strain line, from the largest ratio of a spring's length to its rest length:
+// "most stretched spring: 37.6 % over rest length" ("2.0 % under" when every spring is
+// compressed; "no springs" for a NaN ratio). A bare "largest stretch 37.6 %" at rest left a
+// newcomer wondering what was stretched, and over what.
+std::string stretch_text(double largest_stretch_ratio);
+
 // `utf8` with the signs weft's messages use spelled in ASCII ("—" as "-", "×" as "x", "²" as
 // "2", "·" as ".", "…" as "...", "Δ" as "d", "°" as " deg"): the window's font (Dear ImGui's
 // default, ProggyClean) has no glyph for them and would draw "?". Anything else is kept.

@@ -129,7 +129,6 @@ std::variant<CommandLine, CommandLineError> parse_command_line(
                 return CommandLineError{"--compare", "only applies in the window"};
             return line;
         }
-        if (!line.scene_path) return CommandLineError{"--headless", "needs a scene file"};
         if (!line.steps) return CommandLineError{"--headless", "needs --steps N"};
         if (line.record_path) return CommandLineError{"--record", "only applies in the window"};
         if (!line.comparisons.empty())
@@ -148,11 +147,13 @@ const char* usage_text() {
     return "usage:\n"
            "  weft [SCENE.toml] [--set KEY=VALUE]... [--compare METHOD[=DT]]... [--record FILE]\n"
            "  weft --replay SESSION.toml [--compare METHOD[=DT]]...\n"
-           "  weft --headless SCENE.toml --steps N [--set KEY=VALUE]... [--dump STATE.csv]\n"
+           "  weft --headless [SCENE.toml] --steps N [--set KEY=VALUE]... [--dump STATE.csv]\n"
            "       [--screenshot IMAGE.png [--size WxH]]\n"
            "  weft --headless --replay SESSION.toml [--dump STATE.csv] [--screenshot IMAGE.png]\n"
            "  weft --help | --version\n"
            "\n"
+           "  SCENE.toml        a scene file; none: the default, hanging_sheet.toml, from the\n"
+           "                    shipped scenes (installed: BINDIR/../share/weft/scenes)\n"
            "  --set KEY=VALUE   override a scene key by its dotted path, e.g. solver.dt=0.0005\n"
            "  --steps N         run exactly N steps of the scene's dt (headless)\n"
            "  --dump FILE       write row,col,x,y,z,vx,vy,vz per particle after the run\n"

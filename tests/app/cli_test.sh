@@ -27,6 +27,10 @@ check "pinned corner stays" test "$(sed -n 2p "$work/state.csv" | cut -d, -f6-8)
 expect 0 quiet -- --headless "$scenes/hanging_sheet.toml" --steps 0 --dump "$work/initial.csv"
 check "zero steps keeps the initial velocities" awk -F, 'NR > 1 && ($6 != 0 || $7 != 0 || $8 != 0) { exit 1 }' "$work/initial.csv"
 
+# No scene given: the default one, as in the window.
+expect 0 quiet -- --headless --steps 0 --dump "$work/default.csv"
+check "headless without a scene runs the default" cmp -s "$work/default.csv" "$work/initial.csv"
+
 # Divergence: explicit Euler on the stiff sheet without damping blows up -> status 3.
 expect 3 '^diverged at t=[0-9.]+: ' -- --headless "$scenes/stiff_sheet.toml" --steps 1000 \
   --set solver.integrator=explicit-euler --set springs.structural.damping=0

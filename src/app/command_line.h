@@ -2,8 +2,9 @@
 //   weft [SCENE.toml] [--set KEY=VALUE]... [--compare METHOD[=DT]]... [--record FILE]
 //   weft --replay SESSION.toml [--compare METHOD[=DT]]...
 //   weft --headless [SCENE.toml] --steps N [--set KEY=VALUE]... [--dump STATE.csv]
-//        [--screenshot IMAGE.png [--size WxH]]
-//   weft --headless --replay SESSION.toml [--dump STATE.csv] [--screenshot IMAGE.png]
+//        [--screenshot IMAGE.png [--size WxH] [--compare METHOD[=DT]]...]
+//   weft --headless --replay SESSION.toml [--dump STATE.csv]
+//        [--screenshot IMAGE.png [--size WxH] [--compare METHOD[=DT]]...]
 //   weft --help | --version
 #pragma once
 

@@ -30,8 +30,8 @@ std::string stretch_text(double largest_stretch_ratio) {
     if (!std::isfinite(largest_stretch_ratio)) return "most stretched spring: none (no springs)";
     const double percent = 100.0 * (largest_stretch_ratio - 1.0);
     char text[96];
-    std::snprintf(text, sizeof text, "most stretched spring: %.1f %% %s rest length",
-                  std::abs(percent), percent < 0.0 ? "under" : "over");
+    std::snprintf(text, sizeof text, "most stretched spring: rest %c %.1f %%",
+                  percent < 0.0 ? '-' : '+', std::abs(percent));
     return text;
 }
 

@@ -26,9 +26,9 @@ TEST(StatusText, LinearSolveShowsIterationsAndTheResidualToTwoDigits) {
 }
 
 TEST(StatusText, StretchSaysWhatIsStretchedAndOverWhat) {
-    EXPECT_EQ(stretch_text(1.376), "most stretched spring: 37.6 % over rest length");
-    EXPECT_EQ(stretch_text(1.0), "most stretched spring: 0.0 % over rest length");
-    EXPECT_EQ(stretch_text(0.98), "most stretched spring: 2.0 % under rest length");
+    EXPECT_EQ(stretch_text(1.376), "most stretched spring: rest + 37.6 %");
+    EXPECT_EQ(stretch_text(1.0), "most stretched spring: rest + 0.0 %");
+    EXPECT_EQ(stretch_text(0.98), "most stretched spring: rest - 2.0 %");
     EXPECT_EQ(stretch_text(std::nan("")), "most stretched spring: none (no springs)");
 }
 

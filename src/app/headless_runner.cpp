@@ -157,7 +157,8 @@ int run_headless(const CommandLine& command_line) {
     }
     // Copies for the screenshot only: each follows the main run to the same simulated time
     // with its own dt; one that diverges stops where it was caught and says so.
-    std::vector<Simulation> copies = comparison_runs(*scene, command_line);
+    std::vector<Simulation> copies;
+    if (command_line.screenshot_path) copies = comparison_runs(*scene, command_line);
     for (Simulation& copy : copies) {
         while (copy.time() + 0.5 * copy.dt() <= simulation.time()) {
             StepReport report = copy.step();

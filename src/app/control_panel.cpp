@@ -28,7 +28,7 @@ const char* const controls_text[][2] = {
     {"Q / E", "move down / up"},
     {"arrow keys", "orbit around the point looked at"},
     {"mouse wheel", "zoom toward / away from the point looked at"},
-    {"Home or C", "reset the camera"},
+    {"Home / C", "frame the cloth / the scene's camera"},
     {"space + mouse", "pull the cloth (grab where the cursor is)"},
     {"left mouse drag", "pull the cloth"},
     {"right mouse drag", "cut the springs the cursor crosses"},
@@ -114,11 +114,7 @@ void statistics(DemoState& state) {
                          FLT_MAX, FLT_MAX, ImVec2(0, 50));
     }
     // Measured, not coloured: the strain colours cost a 256² sheet's frame 7 % of its time.
-    const double stretch_ratio = largest_stretch_ratio(cloth);
-    if (std::isfinite(stretch_ratio))
-        ImGui::Text("largest stretch %.1f %%", 100.0 * (stretch_ratio - 1.0));
-    else
-        ImGui::TextUnformatted("largest stretch: n/a");
+    ImGui::TextWrapped("%s", stretch_text(largest_stretch_ratio(cloth)).c_str());
     if (state.recovery.recoveries > 0)
         ImGui::TextColored(ImVec4(1, 0.6f, 0.2f, 1), "recovered from divergence %s",
                            counted(state.recovery.recoveries, "time", "times").c_str());

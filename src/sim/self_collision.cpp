@@ -180,14 +180,17 @@ std::size_t SelfCollision::resolve(Cloth& cloth, std::span<const Collider> colli
                                    WorkerPool* pool, std::span<const Vec3> step_start) {
     if (step_start.size() == cloth.particle_count() && cloth.particle_count() > 0) {
         double largest_move_squared = 0.0;
+        bool finite = true;  // a diverged step is the guard's to report, not swept here
         for (std::size_t p = 0; p < step_start.size(); ++p) {
             const Vec3 move = cloth.positions[p] - step_start[p];
-            largest_move_squared = std::max(largest_move_squared, glm::dot(move, move));
+            const double move_squared = glm::dot(move, move);
+            finite = finite && std::isfinite(move_squared);
+            largest_move_squared = std::max(largest_move_squared, move_squared);
         }
         // Each particle moved less than half the thickness: two that end the step apart
         // were never closer than the thickness minus their relative move, so they cannot
         // have passed through each other (they were apart at its start): the end check holds.
-        if (largest_move_squared > 0.25 * thickness_ * thickness_) {
+        if (finite && largest_move_squared > 0.25 * thickness_ * thickness_) {
             // The list's positions are stale after this; the next plain pass rebuilds it.
             built_at_.clear();
             return resolve_swept(cloth, colliders, step_start, std::sqrt(largest_move_squared));

@@ -70,6 +70,7 @@ void ImplicitGridSolver::prepare(int grid_rows, int grid_cols) {
     static_forces.assign(count, Vec3(0.0));
     zero_velocities.assign(count, Vec3(0.0));
     has_previous_change = false;
+    contacts.held.clear();  // their particles belonged to the old grid
     job = implicit_kernel::Job{};
     bind();
 }

@@ -11,6 +11,7 @@
 #include "sim/colliders.h"
 #include "sim/divergence.h"
 #include "sim/drag.h"
+#include "sim/energy_guard.h"
 #include "sim/force_pass.h"
 #include "sim/integrators/integrator.h"
 #include "sim/scene.h"
@@ -139,6 +140,7 @@ class Simulation {
     std::optional<SelfCollision> self_collision_;
     std::vector<Vec3> step_start_;  // m: positions before the step, for self-collision
     DivergenceGuard divergence_guard_;
+    EnergyGuard energy_guard_;
     double time_ = 0.0;
     std::uint64_t steps_taken_ = 0;
 };

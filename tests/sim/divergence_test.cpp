@@ -1,11 +1,14 @@
-// The divergence guard: blown-up states are caught with a reason, sound ones are not.
+// The divergence and energy guards: blown-up states are caught with a reason, sound ones
+// are not.
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <string>
 
 #include "sim/cloth_builder.h"
 #include "sim/divergence.h"
 #include "sim/grid_force_pass.h"
+#include "sim/scene_loader.h"
 #include "sim/simulation.h"
 #include "test_scenes.h"
 
@@ -110,6 +113,38 @@ TEST(DivergenceGuard, TheBoundedGuardSeesAStretchAfterALongQuietRun) {
     Cloth with_nan = simulation.cloth();
     with_nan.velocities[10].y = std::numeric_limits<double>::quiet_NaN();
     EXPECT_TRUE(guard.check(with_nan, false).has_value());
+}
+
+TEST(EnergyGuard, CatchesExplicitEulerOnTheSheetOnASphereByTheEnergyItGains) {
+    // Explicit Euler on sheet_on_sphere.toml gains energy from 0.45 s (+45 J by 0.5 s, the
+    // sheet's energy scale M (|g| L + ½ (1 m/s)²) being 109 J); no spring passes the runaway
+    // stretch until 0.655 s.
+    SceneLoadResult loaded =
+        load_scene_file(std::string(WEFT_SOURCE_DIR) + "/assets/scenes/sheet_on_sphere.toml",
+                        {"solver.integrator=explicit-euler"});
+    ASSERT_TRUE(loaded.ok()) << loaded.error->message();
+    Simulation simulation(*loaded.scene);
+    StepReport report;
+    while (!report.diverged() && simulation.time() < 1.0) report = simulation.step();
+    ASSERT_TRUE(report.diverged());
+    EXPECT_NE(report.divergence->find("energy grew"), std::string::npos) << *report.divergence;
+    EXPECT_LT(simulation.time(), 0.6);
+    EXPECT_GT(simulation.time(), 0.4);  // not while it fell and landed soundly
+}
+
+TEST(EnergyGuard, TheWindsWorkIsNotCountedAsAGain) {
+    // A free sheet in a strong wind and no gravity: the wind's drag speeds it up from rest,
+    // its energy growing by the wind's work alone, which the guard integrates.
+    Scene scene;
+    scene.cloth.rows = scene.cloth.cols = 8;
+    scene.cloth.pin_preset = PinPreset::none;
+    scene.forces.gravity = {0.0, 0.0, 0.0};
+    scene.forces.air_drag = 0.05;
+    scene.forces.wind = {20.0, 0.0, 0.0};
+    scene.solver = {Integrator::symplectic_euler, 1e-3};
+    Simulation simulation(scene);
+    for (int s = 0; s < 2000; ++s) ASSERT_FALSE(simulation.step().diverged()) << "step " << s;
+    EXPECT_GT(simulation.cloth().velocities[0].x, 15.0);  // it did pick up the wind's speed
 }
 
 }  // namespace

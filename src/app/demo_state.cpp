@@ -1,5 +1,6 @@
 // Table of contents: construction · stepping with recovery · runs side by side · the hand ·
-// parameter changes · scenes (reset, load, save) · recording and replay.
+// parameter changes · scenes (reset, load, save) · recording and replay. Pausing and what
+// each frame measures are in demo_frame.cpp.
 #include "app/demo_state.h"
 
 #include <algorithm>
@@ -9,8 +10,6 @@
 
 #include "app/atomic_file.h"
 #include "app/hand_tools.h"
-#include "sim/divergence.h"
-#include "sim/energy.h"
 #include "sim/scene_loader.h"
 #include "sim/scene_writer.h"
 #include "sim/state_hash.h"
@@ -74,32 +73,6 @@ void DemoState::say(const std::string& text, Tone tone) {
     message_tone = tone;
     message_until = wall_now + 4.0;
     std::fprintf(stderr, "%s\n", text.c_str());
-}
-
-void DemoState::measure_frame(int steps) {
-    const Cloth& cloth = simulation.cloth();
-    // Measured, not coloured: the strain colours cost a 256² sheet's frame 7 % of its time.
-    statistics.stretch_ratio = largest_stretch_ratio(cloth);
-    const double energy = steps > 0 ? measure_energy(cloth, simulation.force_field()).total() : 0.0;
-    statistics.plots.add_frame(steps, energy, statistics.stretch_ratio,
-                               statistics.sim_seconds + statistics.raster_seconds);
-}
-
-void DemoState::toggle_pause() {
-    paused = !paused;
-    single_step = false;
-}
-
-void DemoState::step_once() {
-    single_step = paused;
-}
-
-StepClock::Plan DemoState::plan_frame(double elapsed, double seconds_per_step) {
-    if (!paused) return clock.advance(elapsed, simulation.dt(), seconds_per_step);
-    clock.reset();
-    const StepClock::Plan plan{single_step ? 1 : 0, false};
-    single_step = false;
-    return plan;
 }
 
 // ---- stepping with recovery -----------------------------------------------------------------

@@ -415,7 +415,8 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
         // The camera may move under a held drag.
         state.pull(hand_point(state, w), columns_of(state, w).view());
 
-        // Step: as many fixed steps as keep simulated time with the clock, within budget.
+        // Step: as many fixed steps as keep simulated time with the clock, within budget;
+        // while paused, none but the one N or the panel's step button asked for.
         const StepClock::Plan plan = state.plan_frame(elapsed, seconds_per_step);
         const double sim_start = now_seconds();
         const int steps = state.step(plan.steps);

@@ -55,6 +55,19 @@ TEST(NumberFormat, TheSuffixFollowsAndAPercentSignIsEscaped) {
     EXPECT_EQ(significant_format(37.6, 3, 0, " %"), "%.1f %%");
 }
 
+// Dear ImGui 1.86 reads the digits after "%." as the format's precision and takes 10^-precision
+// as the smallest value a logarithmic slider reaches: whatever the value, the format must
+// keep at least the decimals the slider's low end needs.
+TEST(NumberFormat, EveryFormatKeepsTheDecimalsTheSlidersLowEndNeeds) {
+    for (int least : {0, 1, 2, 4}) {
+        for (double exponent = -320.0; exponent <= 300.0; exponent += 0.37) {
+            const std::string format = significant_format(std::pow(10.0, exponent), 3, least);
+            ASSERT_EQ(format.substr(0, 2), "%.") << format;
+            EXPECT_GE(std::atoi(format.c_str() + 2), least) << format;
+        }
+    }
+}
+
 TEST(NumberFormat, DecimalsToReachASlidersLowEnd) {
     EXPECT_EQ(decimals_to_reach(1e-4), 4);
     EXPECT_EQ(decimals_to_reach(0.002), 3);

@@ -3,6 +3,8 @@
 # the stiff sheet, the invariant study on the tearing sheet and the sheet on a sphere (where
 # a trajectory error means nothing), and the stability sweeps (grid, mass, stiffness), in a
 # Release build. Takes a few minutes on a 2-core machine.
+usage="scripts/accuracy-report.sh"
+source "$(dirname "$0")/help_or_version.sh"
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh

@@ -5,6 +5,8 @@
 #   scripts/fuzz.sh            a short run: 60 s of scenes, 30 s of sessions (what CI does)
 #   scripts/fuzz.sh 3600       a long run: an hour and a half hour; findings land in ./crash-*
 # Inputs that crash, hang (> 10 s) or use more than 2 GiB fail the run.
+usage="scripts/fuzz.sh [SECONDS]"
+source "$(dirname "$0")/help_or_version.sh"
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}

@@ -3,6 +3,8 @@
 # to 256² with all spring families, weft against the plain baseline, the machine's limits,
 # drawing, self-collision), in a Release build, with the machine and its load recorded in
 # the log. About two minutes on a 2-core machine. WEFT_THREADS=1 runs it on one thread.
+usage="scripts/performance-report.sh"
+source "$(dirname "$0")/help_or_version.sh"
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh

@@ -2,6 +2,8 @@
 # Installs the Debian packages weft needs to build and test, and only those that are missing.
 # Runs as root, or through sudo. Where installing is not possible it says what is missing
 # and how to install it, and fails.
+usage="scripts/setup.sh"
+source "$(dirname "$0")/help_or_version.sh"
 set -euo pipefail
 
 packages=(

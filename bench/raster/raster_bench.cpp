@@ -183,12 +183,35 @@ void run_case(const char* view_name, CameraAt camera_at, int width, int height, 
 int main(int argc, char** argv) {
     int frames = 60;
     std::string png_directory;
+    const char* usage =
+        "usage: weft_raster_bench [FRAMES] [--png DIR]\n"
+        "       weft_raster_bench --help | --version\n"
+        "\n"
+        "Times the CPU rasterizer drawing a 128x128 cloth-like sheet at 640x480 and 1280x720,\n"
+        "FRAMES frames per case (default 60), and prints a Markdown table of milliseconds per\n"
+        "frame (bench/raster/RESULTS.md). --png DIR also writes each case's last frame.\n";
+    for (int i = 1; i < argc; ++i) {
+        const std::string argument = argv[i];
+        if (argument == "--help" || argument == "-h") {
+            std::printf("%s", usage);
+            return 0;
+        }
+        if (argument == "--version") {
+            std::printf("weft_raster_bench %s\n", WEFT_VERSION);
+            return 0;
+        }
+    }
     for (int i = 1; i < argc; ++i) {
         const std::string argument = argv[i];
         if (argument == "--png" && i + 1 < argc) {
             png_directory = argv[++i];
-        } else {
+        } else if (!argument.empty() &&
+                   argument.find_first_not_of("0123456789") == std::string::npos) {
             frames = std::max(1, std::atoi(argument.c_str()));
+        } else {
+            std::fprintf(stderr, "error: %s: expects FRAMES (a whole number) or --png DIR\n%s",
+                         argument.c_str(), usage);
+            return 2;
         }
     }
     Sheet sheet;

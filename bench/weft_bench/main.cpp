@@ -9,7 +9,7 @@
 //   weft-bench replay SESSION.toml [--out DIR]
 //   weft-bench realtime [SCENE.toml] [--set K=V]... [--out DIR] [--sizes N,N,...]
 //                       [--duration SECONDS] [--max-run-seconds SECONDS]
-//   weft-bench --help | --version,  weft-bench STUDY --help
+//   weft-bench --help | --version,  weft-bench STUDY --help | --version
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "app/scene_folder.h"
 #include "invariant_study.h"
 #include "precision_study.h"
 #include "realtime_study.h"
@@ -88,7 +89,7 @@ void print_synopses(std::FILE* out) {
     for (const StudyHelp& study : studies) std::fprintf(out, "%s", study.synopsis);
     std::fprintf(out,
                  "  weft-bench --help | --version\n"
-                 "  weft-bench STUDY --help\n");
+                 "  weft-bench STUDY --help | --version\n");
 }
 
 int usage(const char* problem) {
@@ -136,6 +137,11 @@ int main(int argc, char** argv) {
         std::printf("%s", out_option);
         return 0;
     }
+    // Every study is part of the same program, of the same version.
+    if (std::find(args.begin() + 1, args.end(), "--version") != args.end()) {
+        std::printf("weft-bench %s\n", WEFT_VERSION);
+        return 0;
+    }
     std::vector<std::string> scenes, overrides, sweeps;
     std::string out_dir = "bench-out";
     int repeats = 3;
@@ -181,7 +187,7 @@ int main(int argc, char** argv) {
             scenes.push_back(arg);
     }
     weft::bench::install_stop_handler();
-    const std::string scenes_dir = WEFT_SCENES_DIR;
+    const std::string scenes_dir = weft::app::shipped_scenes_folder();
     if (study == "precision") {
         if (scenes.empty())
             scenes = {scenes_dir + "/hanging_sheet.toml", scenes_dir + "/stiff_sheet.toml"};

@@ -124,16 +124,9 @@ std::variant<CommandLine, CommandLineError> parse_command_line(
         if (line.record_path) return CommandLineError{"--record", "cannot record a replay"};
     }
     if (line.headless) {
-        if (line.replay_path) {
-            if (!line.comparisons.empty())
-                return CommandLineError{"--compare", "only applies in the window"};
-            return line;
-        }
-        if (!line.scene_path) return CommandLineError{"--headless", "needs a scene file"};
+        if (line.replay_path) return line;
         if (!line.steps) return CommandLineError{"--headless", "needs --steps N"};
         if (line.record_path) return CommandLineError{"--record", "only applies in the window"};
-        if (!line.comparisons.empty())
-            return CommandLineError{"--compare", "only applies in the window"};
     } else {
         // The window takes --dump (written when it closes) and --size (its size).
         const char* headless_only = line.steps             ? "--steps"
@@ -148,18 +141,22 @@ const char* usage_text() {
     return "usage:\n"
            "  weft [SCENE.toml] [--set KEY=VALUE]... [--compare METHOD[=DT]]... [--record FILE]\n"
            "  weft --replay SESSION.toml [--compare METHOD[=DT]]...\n"
-           "  weft --headless SCENE.toml --steps N [--set KEY=VALUE]... [--dump STATE.csv]\n"
-           "       [--screenshot IMAGE.png [--size WxH]]\n"
-           "  weft --headless --replay SESSION.toml [--dump STATE.csv] [--screenshot IMAGE.png]\n"
+           "  weft --headless [SCENE.toml] --steps N [--set KEY=VALUE]... [--dump STATE.csv]\n"
+           "       [--screenshot IMAGE.png [--size WxH] [--compare METHOD[=DT]]...]\n"
+           "  weft --headless --replay SESSION.toml [--dump STATE.csv]\n"
+           "       [--screenshot IMAGE.png [--size WxH] [--compare METHOD[=DT]]...]\n"
            "  weft --help | --version\n"
            "\n"
+           "  SCENE.toml        a scene file; none: the default, hanging_sheet.toml, from the\n"
+           "                    shipped scenes (installed: BINDIR/../share/weft/scenes)\n"
            "  --set KEY=VALUE   override a scene key by its dotted path, e.g. solver.dt=0.0005\n"
            "  --steps N         run exactly N steps of the scene's dt (headless)\n"
            "  --dump FILE       write row,col,x,y,z,vx,vy,vz per particle after the run\n"
            "                    (in the window: when it closes)\n"
            "  --size WxH        screenshot size, or the window's (default 1280x720)\n"
            "  --compare M[=DT]  show a copy of the scene beside it, stepped by integrator M\n"
-           "                    (at DT seconds; default the scene's dt), fed the same hand\n"
+           "                    (at DT seconds; default the scene's dt), fed the same hand;\n"
+           "                    headless, drawn beside it in the screenshot\n"
            "  --record FILE     record the window's session (hand, panel) to FILE on quit\n"
            "  --replay FILE     replay a recorded session; headless, it reports whether the\n"
            "                    final state is bit for bit the recorded one\n"

@@ -1,9 +1,10 @@
 // The command line of `weft` (contract in the design notes, extended):
 //   weft [SCENE.toml] [--set KEY=VALUE]... [--compare METHOD[=DT]]... [--record FILE]
 //   weft --replay SESSION.toml [--compare METHOD[=DT]]...
-//   weft --headless SCENE.toml --steps N [--set KEY=VALUE]... [--dump STATE.csv]
-//        [--screenshot IMAGE.png [--size WxH]]
-//   weft --headless --replay SESSION.toml [--dump STATE.csv] [--screenshot IMAGE.png]
+//   weft --headless [SCENE.toml] --steps N [--set KEY=VALUE]... [--dump STATE.csv]
+//        [--screenshot IMAGE.png [--size WxH] [--compare METHOD[=DT]]...]
+//   weft --headless --replay SESSION.toml [--dump STATE.csv]
+//        [--screenshot IMAGE.png [--size WxH] [--compare METHOD[=DT]]...]
 //   weft --help | --version
 #pragma once
 
@@ -18,7 +19,7 @@ namespace weft {
 struct CommandLine {
     bool headless = false;
     bool help = false;
-    bool version = false;  // --version: print the version and stop
+    bool version = false;                   // --version: print the version and stop
     std::optional<std::string> scene_path;  // absent: the default scene
     std::vector<std::string> overrides;     // "KEY=VALUE", in order
     std::optional<std::uint64_t> steps;     // --steps N

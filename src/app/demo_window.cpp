@@ -13,6 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include "app/atomic_file.h"
+#include "app/camera_framing.h"
 #include "app/control_panel.h"
 #include "app/demo_state.h"
 #include "app/hand_tools.h"
@@ -194,7 +195,14 @@ bool handle_event(const SDL_Event& event, DemoState& state, Window& w) {
             case SDLK_F1:
                 state.show_help = !state.show_help;
                 break;
-            case SDLK_HOME:
+            case SDLK_HOME: {
+                // Frames the cloth as it is now, seen from the scene camera's direction.
+                const ViewSize view = columns_of(state, w).view();
+                state.rig =
+                    framed(state.initial_rig, bounding_box(state.simulation.cloth().positions),
+                           float(view.width) / float(view.height));
+                break;
+            }
             case SDLK_c:
                 state.rig = state.initial_rig;
                 break;

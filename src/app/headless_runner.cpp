@@ -1,14 +1,18 @@
 #include "app/headless_runner.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <glm/geometric.hpp>
 #include <optional>
+#include <span>
+#include <vector>
 
 #include "app/demo_state.h"
 #include "app/session_record.h"
+#include "app/side_by_side.h"
 #include "app/state_dump.h"
 #include "app/status_text.h"
 #include "raster/png_writer.h"
@@ -69,9 +73,12 @@ bool open_dump(const CommandLine& command_line, std::ofstream& dump) {
     return false;
 }
 
-// Writes the dump and the screenshot asked for; false (after saying why) if one fails.
+// Writes the dump (of the main run, runs[0]) and the screenshot asked for, the runs side by
+// side in equal columns, over the ground grid at `ground_height` (m); false (after saying
+// why) if one fails.
 bool write_outputs(const CommandLine& command_line, std::ofstream& dump,
-                   const Simulation& simulation) {
+                   std::span<const Simulation* const> runs, float ground_height) {
+    const Simulation& simulation = *runs[0];
     if (dump.is_open()) {
         write_state_csv(simulation.cloth(), dump);
         dump.flush();
@@ -83,12 +90,19 @@ bool write_outputs(const CommandLine& command_line, std::ofstream& dump,
     if (command_line.screenshot_path) {
         raster::Framebuffer framebuffer(command_line.screenshot_width,
                                         command_line.screenshot_height);
-        view::ClothView cloth_view(simulation.cloth());
+        std::vector<view::ClothView> cloth_views;
+        cloth_views.reserve(runs.size());
+        std::vector<app::RunView> columns;
+        for (const Simulation* run : runs) {
+            cloth_views.emplace_back(run->cloth());
+            columns.push_back({run, &cloth_views.back()});
+        }
         WorkerPool pool(default_thread_count());  // bands: the same image on any count
-        view::render_frame(framebuffer, view::scene_camera(simulation.scene()), simulation.cloth(),
-                           cloth_view, view::FrameOptions{},
-                           view::ground_height_below(simulation.cloth(), simulation.colliders()),
-                           simulation.colliders(), &pool);
+        std::vector<raster::Framebuffer> scratch;
+        const int column_width =
+            std::max(1, command_line.screenshot_width / static_cast<int>(runs.size()));
+        app::render_columns(framebuffer, scratch, view::scene_camera(simulation.scene()), columns,
+                            column_width, view::FrameOptions{}, ground_height, &pool);
         std::string error;
         if (!raster::write_png(framebuffer, *command_line.screenshot_path, &error)) {
             print_error(*command_line.screenshot_path, error);
@@ -96,6 +110,28 @@ bool write_outputs(const CommandLine& command_line, std::ofstream& dump,
         }
     }
     return true;
+}
+
+// Where the screenshot's ground grid goes: below the cloth as it ends, but never more than the
+// cloth's length below where the grid was as it started: a piece torn off and falling away
+// would otherwise take the ground out of the picture.
+float final_ground_height(const Simulation& simulation, float start_ground_height) {
+    const Cloth& cloth = simulation.cloth();
+    const auto cloth_length = static_cast<float>(std::max(cloth.rows, cloth.cols) * cloth.spacing);
+    return std::max(view::ground_height_below(cloth, simulation.colliders()),
+                    start_ground_height - cloth_length);
+}
+
+// The copies --compare asks for: the scene with another integrator (and dt).
+std::vector<Simulation> comparison_runs(const Scene& scene, const CommandLine& command_line) {
+    std::vector<Simulation> copies;
+    for (const CommandLine::Comparison& comparison : command_line.comparisons) {
+        Scene copy = scene;
+        copy.solver.integrator = *integrator_from_name(comparison.integrator);
+        if (comparison.dt > 0.0) copy.solver.dt = comparison.dt;
+        copies.emplace_back(copy);
+    }
+    return copies;
 }
 
 }  // namespace
@@ -108,6 +144,8 @@ int run_headless(const CommandLine& command_line) {
     if (!open_dump(command_line, dump)) return exit_bad_input;
 
     Simulation simulation(*scene);
+    const float start_ground_height =
+        view::ground_height_below(simulation.cloth(), simulation.colliders());
     int status = exit_ok;
     for (std::uint64_t step = 0; step < *command_line.steps; ++step) {
         StepReport report = simulation.step();
@@ -117,8 +155,27 @@ int run_headless(const CommandLine& command_line) {
             break;
         }
     }
+    // Copies for the screenshot only: each follows the main run to the same simulated time
+    // with its own dt; one that diverges stops where it was caught and says so.
+    std::vector<Simulation> copies;
+    if (command_line.screenshot_path) copies = comparison_runs(*scene, command_line);
+    for (Simulation& copy : copies) {
+        while (copy.time() + 0.5 * copy.dt() <= simulation.time()) {
+            StepReport report = copy.step();
+            if (report.diverged()) {
+                std::fprintf(stderr, "note: the %s copy diverged at t=%.6g s: %s\n",
+                             integrator_name(copy.integrator()), copy.time(),
+                             report.divergence->c_str());
+                break;
+            }
+        }
+    }
+    std::vector<const Simulation*> runs{&simulation};
+    for (const Simulation& copy : copies) runs.push_back(&copy);
     // Also written on divergence: the state that was caught is what one wants to look at.
-    if (!write_outputs(command_line, dump, simulation)) return exit_bad_input;
+    if (!write_outputs(command_line, dump, runs,
+                       final_ground_height(simulation, start_ground_height)))
+        return exit_bad_input;
     return status;
 }
 
@@ -134,6 +191,9 @@ int run_headless_replay(const CommandLine& command_line) {
     if (!open_dump(command_line, dump)) return exit_bad_input;
     SceneLoadResult scene = load_scene_text(record->scene_toml, path);  // checked when read
     app::DemoState state(path, {}, *scene.scene);
+    for (const CommandLine::Comparison& comparison : command_line.comparisons)
+        state.add_companion(*integrator_from_name(comparison.integrator),
+                            comparison.dt > 0.0 ? comparison.dt : scene.scene->solver.dt);
     state.start_replay(*record);
     while (!state.replay_finished()) state.step(4096);
     const bool matches = state.replay_matches();
@@ -143,7 +203,11 @@ int run_headless_replay(const CommandLine& command_line) {
         app::counted(static_cast<long long>(record->events.size()), "event", "events").c_str(),
         path.c_str(), static_cast<unsigned long long>(hash_state(state.simulation.cloth())),
         matches ? "matches the recording" : "DIFFERS from the recording");
-    if (!write_outputs(command_line, dump, state.simulation)) return exit_bad_input;
+    std::vector<const Simulation*> runs;
+    for (int run = 0; run < state.run_count(); ++run) runs.push_back(&state.run(run));
+    if (!write_outputs(command_line, dump, runs,
+                       final_ground_height(state.simulation, state.ground_height)))
+        return exit_bad_input;
     return matches ? exit_ok : exit_replay_differs;
 }
 

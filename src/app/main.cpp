@@ -7,6 +7,7 @@
 #include "app/command_line.h"
 #include "app/demo_window.h"
 #include "app/headless_runner.h"
+#include "app/scene_folder.h"
 
 int main(int argc, char** argv) {
     const std::vector<std::string> args(argv + 1, argv + argc);
@@ -28,8 +29,14 @@ int main(int argc, char** argv) {
     try {
         if (command_line.headless && command_line.replay_path)
             return weft::run_headless_replay(command_line);
-        if (command_line.headless) return weft::run_headless(command_line);
-        return weft::app::run_demo_window(command_line, WEFT_DEFAULT_SCENE);
+        // No scene given: the default one, beside an installed weft or in the source tree.
+        const std::string default_scene = weft::app::default_scene_path();
+        if (command_line.headless) {
+            weft::CommandLine with_scene = command_line;
+            if (!with_scene.scene_path) with_scene.scene_path = default_scene;
+            return weft::run_headless(with_scene);
+        }
+        return weft::app::run_demo_window(command_line, default_scene.c_str());
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr, "error: out of memory\n");
         return weft::exit_bad_input;

@@ -1,6 +1,5 @@
 #include <imgui.h>
 #include <cfloat>
-#include <cmath>
 #include <cstdio>
 
 #include "app/panel_sections.h"
@@ -44,11 +43,7 @@ void statistics_section(DemoState& state) {
         plot("##energy", plots.energy, overlay);
     }
     // The stretch is measured every frame, so a cut while paused shows at once.
-    if (std::isfinite(s.stretch_ratio))
-        std::snprintf(overlay, sizeof overlay, "largest stretch %.1f %%",
-                      100.0 * (s.stretch_ratio - 1.0));
-    else
-        std::snprintf(overlay, sizeof overlay, "largest stretch: n/a (no springs)");
+    std::snprintf(overlay, sizeof overlay, "%s", stretch_text(s.stretch_ratio).c_str());
     plot("##stretch", plots.stretch_percent, overlay);
     if (!plots.frame_milliseconds.empty()) {
         std::snprintf(overlay, sizeof overlay, "%.2f ms a frame stepping + drawing",

@@ -28,40 +28,41 @@ glm::vec2 Columns::local(const glm::vec2& window_point, int column) const {
     return {window_point.x - left - static_cast<float>(column * width), window_point.y - top};
 }
 
-namespace {
-
-view::ClothView& run_view(DemoState& state, int run) {
-    return run == 0 ? state.cloth_view
-                    : state.companions[static_cast<std::size_t>(run - 1)].cloth_view;
-}
-
-}  // namespace
-
-void render_runs(raster::Framebuffer& framebuffer, std::vector<raster::Framebuffer>& scratch,
-                 DemoState& state, const Columns& columns, WorkerPool* pool) {
-    const raster::Camera camera = state.rig.camera();
-    if (columns.count == 1) {
-        view::render_frame(framebuffer, camera, state.simulation.cloth(), state.cloth_view,
-                           state.frame_options, state.ground_height, state.simulation.colliders(),
-                           pool);
+void render_columns(raster::Framebuffer& framebuffer, std::vector<raster::Framebuffer>& scratch,
+                    const raster::Camera& camera, std::span<const RunView> runs, int column_width,
+                    const view::FrameOptions& options, float ground_height, WorkerPool* pool) {
+    if (runs.size() == 1) {
+        view::render_frame(framebuffer, camera, runs[0].simulation->cloth(), *runs[0].cloth_view,
+                           options, ground_height, runs[0].simulation->colliders(), pool);
         return;
     }
-    framebuffer.clear(state.frame_options.background);
-    scratch.resize(static_cast<std::size_t>(columns.count), raster::Framebuffer(1, 1));
-    for (int run = 0; run < columns.count; ++run) {
-        raster::Framebuffer& column = scratch[static_cast<std::size_t>(run)];
-        if (column.width() != columns.width || column.height() != columns.height)
-            column.resize(columns.width, columns.height);
-        const Simulation& simulation = state.run(run);
-        view::render_frame(column, camera, simulation.cloth(), run_view(state, run),
-                           state.frame_options, state.ground_height, simulation.colliders(), pool);
-        const int left = run * columns.width;
-        const int copied = std::min(columns.width, framebuffer.width() - left);
-        for (int y = 0; y < std::min(columns.height, framebuffer.height()) && copied > 0; ++y)
+    framebuffer.clear(options.background);
+    scratch.resize(runs.size(), raster::Framebuffer(1, 1));
+    const int height = framebuffer.height();
+    for (std::size_t run = 0; run < runs.size(); ++run) {
+        raster::Framebuffer& column = scratch[run];
+        if (column.width() != column_width || column.height() != height)
+            column.resize(column_width, height);
+        const Simulation& simulation = *runs[run].simulation;
+        view::render_frame(column, camera, simulation.cloth(), *runs[run].cloth_view, options,
+                           ground_height, simulation.colliders(), pool);
+        const int left = static_cast<int>(run) * column_width;
+        const int copied = std::min(column_width, framebuffer.width() - left);
+        for (int y = 0; y < height && copied > 0; ++y)
             std::copy_n(
                 column.colours().begin() + static_cast<long>(column.index(0, y)), copied,
                 framebuffer.colours().begin() + static_cast<long>(framebuffer.index(left, y)));
     }
+}
+
+void render_runs(raster::Framebuffer& framebuffer, std::vector<raster::Framebuffer>& scratch,
+                 DemoState& state, const Columns& columns, WorkerPool* pool) {
+    std::vector<RunView> runs{{&state.simulation, &state.cloth_view}};
+    for (Companion& companion : state.companions)
+        runs.push_back({&companion.simulation, &companion.cloth_view});
+    runs.resize(std::min(runs.size(), static_cast<std::size_t>(columns.count)));
+    render_columns(framebuffer, scratch, state.rig.camera(), runs, columns.width,
+                   state.frame_options, state.ground_height, pool);
 }
 
 }  // namespace weft::app

@@ -3,6 +3,7 @@
 // column it is in. SDL-free, so the split and the drawing are tested without a window.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -30,6 +31,21 @@ struct Columns {
     glm::vec2 local(const glm::vec2& window_point, int column) const;
     ViewSize view() const { return {width, height}; }
 };
+
+// One run of a side-by-side frame: what is drawn and the view kept for it between frames.
+struct RunView {
+    const Simulation* simulation;
+    view::ClothView* cloth_view;
+};
+
+// Draws `runs` side by side through one camera, each into a column `column_width` px wide
+// and the framebuffer's height, the first at the left, through `scratch` framebuffers kept
+// between frames; a single run is drawn straight into `framebuffer`. The window and the
+// headless screenshot (--compare) both draw through this.
+void render_columns(raster::Framebuffer& framebuffer, std::vector<raster::Framebuffer>& scratch,
+                    const raster::Camera& camera, std::span<const RunView> runs, int column_width,
+                    const view::FrameOptions& options, float ground_height,
+                    WorkerPool* pool = nullptr);
 
 // Draws every run of `state` into its column of `framebuffer` (resized to the view), through
 // `scratch` framebuffers kept between frames. With one run it draws straight into it.

@@ -1,6 +1,7 @@
 #include "app/status_text.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iterator>
 
@@ -23,6 +24,15 @@ std::optional<std::string> linear_solve_text(const Simulation& simulation) {
     // run's numbers), so there is nothing true to show yet.
     if (simulation.time() == 0.0) return std::string("solve: none yet");
     return linear_solve_text(simulation.last_linear_solve());
+}
+
+std::string stretch_text(double largest_stretch_ratio) {
+    if (!std::isfinite(largest_stretch_ratio)) return "most stretched spring: none (no springs)";
+    const double percent = 100.0 * (largest_stretch_ratio - 1.0);
+    char text[96];
+    std::snprintf(text, sizeof text, "most stretched spring: rest %c %.1f %%",
+                  percent < 0.0 ? '-' : '+', std::abs(percent));
+    return text;
 }
 
 std::string ascii_text(std::string_view utf8) {

@@ -23,6 +23,13 @@ std::string linear_solve_text(const Simulation::LinearSolve& solve);
 // solve no system.
 std::optional<std::string> linear_solve_text(const Simulation& simulation);
 
+// The panel's strain line, from the largest ratio of a spring's length to its rest length:
+// "most stretched spring: rest + 37.6 %" ("rest - 2.0 %" when every spring is compressed;
+// "none (no springs)" for a NaN ratio), short enough for the narrowest panel's line. A bare
+// "largest stretch 37.6 %" at rest left a newcomer wondering what was stretched, and over
+// what.
+std::string stretch_text(double largest_stretch_ratio);
+
 // `utf8` with the signs weft's messages use spelled in ASCII ("—" as "-", "×" as "x", "²" as
 // "2", "·" as ".", "…" as "...", "Δ" as "d", "°" as " deg"): the window's font (Dear ImGui's
 // default, ProggyClean) has no glyph for them and would draw "?". Anything else is kept.

@@ -141,7 +141,20 @@ void walk_line(Framebuffer& framebuffer, WindowPoint a, WindowPoint b, const Pix
         const int x = x_major ? c : m, y = x_major ? m : c;
         const std::size_t index = static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x);
         const float depth = depth_start + t * depth_delta;
-        if (depth_test && !(depth < depths[index])) continue;
+        float surface_depth = depths[index];
+        if (style.on_surface) {
+            // The surface under the line's exact point lies between this pixel's centre and
+            // the next one's toward the point: the farther of the two bounds it.
+            const float exact = minor_start + t * minor_delta;
+            const int next = exact < static_cast<float>(m) + 0.5f ? m - 1 : m + 1;
+            if (next >= minor_begin && next < minor_end) {
+                const std::size_t next_index =
+                    x_major ? static_cast<std::size_t>(next) * width + static_cast<std::size_t>(x)
+                            : static_cast<std::size_t>(y) * width + static_cast<std::size_t>(next);
+                surface_depth = std::max(surface_depth, depths[next_index]);
+            }
+        }
+        if (depth_test && !(depth < surface_depth)) continue;
         if (blend_colours) {
             const WindowPoint p = lerp(a, b, t);
             colours[index] = to_rgba8(p.colour_over_w / p.inverse_w);

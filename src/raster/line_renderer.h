@@ -32,6 +32,13 @@ struct LineStyle {
     float depth_bias = 0.003f;  // fraction of the eye distance lines and points are pulled in
     bool depth_test = true;
     bool depth_write = true;
+    // For lines lying in a surface drawn before them (wireframe, springs): the DDA's pixel
+    // centre is up to half a pixel from the line, and where the surface is seen nearly
+    // edge-on its depth changes faster across that half pixel than the bias covers, so the
+    // surface would win at scattered pixels. With this set, a line pixel is tested against
+    // the farther depth of its own pixel and of the neighbour on the line's side along the
+    // minor axis (within the scissor), which brackets the surface's depth under the line.
+    bool on_surface = false;
     PixelRect scissor = PixelRect::unbounded();
 };
 

@@ -18,6 +18,10 @@ struct ForceField {
     Vec3 wind{0.0};                       // m/s
     const DragHandle* drag = nullptr;     // the user's pull, while there is one
     std::span<const Collider> colliders;  // those with repulsion contacts, if any
+    // Every collider, for the structured implicit step, which holds particles on the impulse
+    // ones inside its solve (integrators/implicit_contacts.h); the other steps leave those to
+    // the contact pass after the step.
+    std::span<const Collider> solids;
 };
 
 // Writes into `forces` the total force on each particle (N) for the state (positions,

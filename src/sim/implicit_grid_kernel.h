@@ -71,7 +71,13 @@ struct Job {
     double* coarse_correction = nullptr;     // 3 per node
     const double* coarse_inverse = nullptr;  // 6 per node
 
-    Field3 rhs;             // b = M v0 + h f(x0, 0)
+    // Particles held on a solid's surface (integrators/implicit_contacts.h): the unit normal
+    // along which each one's velocity is prescribed, zero for every other particle. Every
+    // residual, product and preconditioned vector is filtered by S = I - n nᵀ there.
+    bool has_contacts = false;
+    Field3 contact_normal;
+
+    Field3 rhs;             // b = M v0 + h f(x0, 0), filtered where a particle is held
     Field3 start;           // v0
     Field3 guess_change;    // the previous step's v1 - v0 (the warm start), kept between steps
     Field3 solution;        // v1, the iterate
@@ -119,5 +125,11 @@ void direction_rows_avx512(const Job& job, int begin, int end, float beta, RowSu
 void update_rows_baseline(const Job& job, int begin, int end, float alpha, RowSums sums);
 void update_rows_avx2(const Job& job, int begin, int end, float alpha, RowSums sums);
 void update_rows_avx512(const Job& job, int begin, int end, float alpha, RowSums sums);
+
+// After the solve, with contacts: applied = A v1 without the contact filter, so that
+// A v1 - b at a held particle is the impulse its surface gave it.
+void unfiltered_product_rows_baseline(const Job& job, int begin, int end);
+void unfiltered_product_rows_avx2(const Job& job, int begin, int end);
+void unfiltered_product_rows_avx512(const Job& job, int begin, int end);
 
 }  // namespace weft::implicit_kernel

@@ -16,6 +16,7 @@
 // is the same bit for bit for any split; sums over particles are taken per row in sixteen
 // fixed lanes and then row by row, so they are too, and for every vector width.
 
+#include "sim/contact_filter.inl"
 #include "sim/deinterleave.inl"
 #include "sim/symmetric_block.inl"
 
@@ -138,11 +139,14 @@ class BandProduct {
                (static_cast<std::size_t>(cols) + 2 * column_padding);
     }
 
-    BandProduct(const Job& job, const Field3& v, int begin, float* scratch)
+    // `filtered`: the product of the filtered system, S A v (every pass of the solve); the
+    // plain A v is for the contacts' impulses after it.
+    BandProduct(const Job& job, const Field3& v, int begin, float* scratch, bool filtered = true)
         : job_(job),
           v_(v),
           ring_(scratch),
-          padded_(static_cast<std::size_t>(job.cols) + 2 * column_padding) {
+          padded_(static_cast<std::size_t>(job.cols) + 2 * column_padding),
+          filter_contacts_(filtered && job.has_contacts) {
         std::fill(ring_, ring_ + scratch_floats(job.cols), 0.0f);
         zero_row_ = ring_ + static_cast<std::size_t>(ring_rows) * max_directions * 3 * padded_ +
                     column_padding;
@@ -166,6 +170,10 @@ class BandProduct {
                                 there + 2 * padded_, y.x + base, y.y + base, y.z + base, cols);
         }
         mask_row(job_.free + base, y.x + base, y.y + base, y.z + base, cols);
+        if (filter_contacts_)
+            filter_contacts_row(job_.contact_normal.x + base, job_.contact_normal.y + base,
+                                job_.contact_normal.z + base, y.x + base, y.y + base, y.z + base,
+                                cols);
     }
 
   private:
@@ -192,6 +200,7 @@ class BandProduct {
     float* ring_;
     std::size_t padded_;
     const float* zero_row_ = nullptr;
+    bool filter_contacts_;
 };
 
 // Scratch for `products` band products at once on this thread: grown on first use, so no
@@ -380,7 +389,22 @@ void diagonal_row(const Job& job, int row, double* __restrict block) {
                              block[4 * cols + c],
                              block[5 * cols + c]};
         double inverse[6];
-        invert_symmetric_block(a, inverse);
+        if (job.has_contacts) {
+            // A particle held on a surface along n: the block of the filtered system, S D S,
+            // is singular along n; its pseudo-inverse, (S D S + n nᵀ)⁻¹ - n nᵀ, is the
+            // preconditioner there. (S D⁻¹ S instead, where the sheet is tilted against the
+            // surface, keeps the large 1/m of the sheet's soft normal: CG ran to 300
+            // iterations.) With no contact, n = 0 and this is D⁻¹ exactly.
+            const double n[3] = {job.contact_normal.x[base + c], job.contact_normal.y[base + c],
+                                 job.contact_normal.z[base + c]};
+            double projected[6] = {a[0], a[1], a[2], a[3], a[4], a[5]};
+            project_symmetric_block(projected, n);
+            add_outer_product(projected, n, 1.0);
+            invert_symmetric_block(projected, inverse);
+            add_outer_product(inverse, n, -1.0);
+        } else {
+            invert_symmetric_block(a, inverse);
+        }
         for (int e = 0; e < 6; ++e) {
             job.diagonal[e][base + c] = static_cast<float>(a[e]) * free[c];
             job.inverse_diagonal[e][base + c] = static_cast<float>(inverse[e]) * free[c];
@@ -488,6 +512,11 @@ void direction_rows(const Job& job, int begin, int end, float beta, RowSums sums
         scale_and_add(job.product.z + base, job.applied.z + base, beta, cols);
         sums.first[row] = row_dot(job.direction, job.product, base, cols);
     }
+}
+
+void unfiltered_product_rows(const Job& job, int begin, int end) {
+    BandProduct plain(job, job.solution, begin, band_scratch(job.cols, 1), false);
+    for (int row = begin; row < end; ++row) plain.row(row, job.applied);
 }
 
 void update_rows(const Job& job, int begin, int end, float alpha, RowSums sums) {

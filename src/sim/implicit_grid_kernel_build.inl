@@ -37,4 +37,9 @@ void WEFT_KERNEL_NAME(update_rows, WEFT_KERNEL_SUFFIX)(const Job& job, int begin
     update_rows(job, begin, end, alpha, sums);
 }
 
+void WEFT_KERNEL_NAME(unfiltered_product_rows, WEFT_KERNEL_SUFFIX)(const Job& job, int begin,
+                                                                   int end) {
+    unfiltered_product_rows(job, begin, end);
+}
+
 }  // namespace weft::implicit_kernel

@@ -12,12 +12,6 @@ namespace weft {
 
 namespace {
 
-// Integer cell coordinate, clamped so that far-flung (but finite) particles cannot overflow
-// the conversion; cells that far out only ever hold the particles that flew there.
-long long cell_coordinate(double position, double cell_size) {
-    return static_cast<long long>(std::clamp(std::floor(position / cell_size), -1e15, 1e15));
-}
-
 // Work below this many particles stays on the calling thread (the hand-off costs more).
 constexpr std::size_t min_particles_for_threads = 4096;
 
@@ -39,14 +33,18 @@ constexpr std::array<std::array<int, 3>, 13> cells_ahead = {{{1, -1, -1},
 
 }  // namespace
 
-std::size_t SelfCollision::hash_cell(long long cx, long long cy, long long cz) const {
+long long SelfCollision::cell_coordinate(double position, double cell_size) {
+    return static_cast<long long>(std::clamp(std::floor(position / cell_size), -1e15, 1e15));
+}
+
+std::size_t SelfCollision::hash_cell(long long cx, long long cy, long long cz, std::size_t mask) {
     // Large primes spread neighbouring cells over the table; collisions only add candidates.
     // Unsigned arithmetic: wrapping is the intent. The table size is a power of two, so the
     // slot is a mask, not a division (this runs 14 times per particle and pass).
     const std::uint64_t h = (static_cast<std::uint64_t>(cx) * 92837111u) ^
                             (static_cast<std::uint64_t>(cy) * 689287499u) ^
                             (static_cast<std::uint64_t>(cz) * 283923481u);
-    return static_cast<std::size_t>(h & slot_mask_);
+    return static_cast<std::size_t>(h & mask);
 }
 
 void SelfCollision::rebuild_hash(const Cloth& cloth, WorkerPool* pool) {
@@ -65,8 +63,8 @@ void SelfCollision::rebuild_hash(const Cloth& cloth, WorkerPool* pool) {
                 const Vec3& x = cloth.positions[p];
                 cells_[p] = {cell_coordinate(x.x, reach()), cell_coordinate(x.y, reach()),
                              cell_coordinate(x.z, reach())};
-                slots_[p] =
-                    static_cast<std::uint32_t>(hash_cell(cells_[p][0], cells_[p][1], cells_[p][2]));
+                slots_[p] = static_cast<std::uint32_t>(
+                    hash_cell(cells_[p][0], cells_[p][1], cells_[p][2], slot_mask_));
             }
         });
     for (std::size_t p = 0; p < count; ++p) ++cell_start_[slots_[p]];
@@ -117,7 +115,7 @@ void SelfCollision::rebuild_candidates(const Cloth& cloth, WorkerPool* pool) {
     // no pair is found twice.
     auto look_at = [&](std::vector<std::pair<std::uint32_t, std::uint32_t>>& found, std::size_t p,
                        const std::array<long long, 3>& cell, bool same_cell) {
-        const std::size_t slot = hash_cell(cell[0], cell[1], cell[2]);
+        const std::size_t slot = hash_cell(cell[0], cell[1], cell[2], slot_mask_);
         for (std::uint32_t e = cell_start_[slot]; e < cell_start_[slot + 1]; ++e) {
             const std::uint32_t q = cell_entries_[e];
             const std::array<long long, 3>& q_cell = cells_[q];
@@ -179,7 +177,22 @@ void SelfCollision::find_pairs(const Cloth& cloth,
 }
 
 std::size_t SelfCollision::resolve(Cloth& cloth, std::span<const Collider> colliders,
-                                   WorkerPool* pool) {
+                                   WorkerPool* pool, std::span<const Vec3> step_start) {
+    if (step_start.size() == cloth.particle_count() && cloth.particle_count() > 0) {
+        double largest_move_squared = 0.0;
+        for (std::size_t p = 0; p < step_start.size(); ++p) {
+            const Vec3 move = cloth.positions[p] - step_start[p];
+            largest_move_squared = std::max(largest_move_squared, glm::dot(move, move));
+        }
+        // Each particle moved less than half the thickness: two that end the step apart
+        // were never closer than the thickness minus their relative move, so they cannot
+        // have passed through each other (they were apart at its start): the end check holds.
+        if (largest_move_squared > 0.25 * thickness_ * thickness_) {
+            // The list's positions are stale after this; the next plain pass rebuilds it.
+            built_at_.clear();
+            return resolve_swept(cloth, colliders, step_start, std::sqrt(largest_move_squared));
+        }
+    }
     std::size_t first_pass_pairs = 0;
     for (int pass = 0; pass < max_passes; ++pass) {
         find_pairs(cloth, pairs_, pool);
@@ -204,19 +217,25 @@ double SelfCollision::separate_pairs(Cloth& cloth) const {
         if (distance >= thickness_) continue;  // an earlier correction already separated them
         // Coincident particles: separate along an arbitrary fixed axis.
         const Vec3 n = distance > 0.0 ? d / distance : Vec3(0.0, 1.0, 0.0);
-        const double share_a = wa / (wa + wb), share_b = wb / (wa + wb);
         const double overlap = thickness_ - distance;
         deepest = std::max(deepest, overlap);
-        cloth.positions[a] -= share_a * overlap * n;
-        cloth.positions[b] += share_b * overlap * n;
-        // Perfectly inelastic along n: the approaching part of the relative velocity goes.
-        const double approach = glm::dot(cloth.velocities[b] - cloth.velocities[a], n);
-        if (approach < 0.0) {
-            cloth.velocities[a] += share_a * approach * n;
-            cloth.velocities[b] -= share_b * approach * n;
-        }
+        push_apart(cloth, a, b, n, overlap);
     }
     return deepest;
+}
+
+void SelfCollision::push_apart(Cloth& cloth, std::uint32_t a, std::uint32_t b, const Vec3& n,
+                               double overlap) {
+    const double wa = cloth.inverse_masses[a], wb = cloth.inverse_masses[b];
+    const double share_a = wa / (wa + wb), share_b = wb / (wa + wb);
+    cloth.positions[a] -= share_a * overlap * n;
+    cloth.positions[b] += share_b * overlap * n;
+    // Perfectly inelastic along n: the approaching part of the relative velocity goes.
+    const double approach = glm::dot(cloth.velocities[b] - cloth.velocities[a], n);
+    if (approach < 0.0) {
+        cloth.velocities[a] += share_a * approach * n;
+        cloth.velocities[b] -= share_b * approach * n;
+    }
 }
 
 }  // namespace weft

@@ -49,14 +49,34 @@ class SelfCollision {
     // is left or `max_passes` are done. The solids go last: they are hard, never left
     // violated; what is left over is a small overlap between layers, which the next step's
     // passes take up.
+    //
+    // `step_start`: the positions at the start of the step just taken, when the caller has
+    // them. A step that moved some particle further than half the thickness (a frame-sized
+    // implicit step does) can carry two particles through each other between its two ends,
+    // where no check of the end positions sees it. Then the pass is swept
+    // (self_collision_swept.cpp): candidates are the pairs whose straight paths over the
+    // step pass near each other, and a pair that came within the thickness is put back
+    // apart on the side it started from.
     std::size_t resolve(Cloth& cloth, std::span<const Collider> colliders = {},
-                        WorkerPool* pool = nullptr);
+                        WorkerPool* pool = nullptr, std::span<const Vec3> step_start = {});
     static constexpr int max_passes = 8;
     static constexpr double settled_overlap = 1e-3;  // × thickness: a pass this deep is the last
 
   private:
     // One Gauss–Seidel pass over pairs_; returns the deepest overlap it corrected (m).
     double separate_pairs(Cloth& cloth) const;
+    // The swept pass (self_collision_swept.cpp).
+    std::size_t resolve_swept(Cloth& cloth, std::span<const Collider> colliders,
+                              std::span<const Vec3> step_start, double largest_move);
+    void find_swept_candidates(const Cloth& cloth, std::span<const Vec3> step_start,
+                               double largest_move);
+    // One swept Gauss–Seidel pass over swept_candidates_; the deepest correction (m).
+    double separate_swept_pairs(Cloth& cloth, std::span<const Vec3> step_start,
+                                std::size_t& close_pairs) const;
+    // Moves b from a by `overlap` along n, shared by inverse mass (at least one is free),
+    // and takes the approaching part of their relative velocity along n.
+    static void push_apart(Cloth& cloth, std::uint32_t a, std::uint32_t b, const Vec3& n,
+                           double overlap);
     double margin() const { return thickness_; }            // m: how far the list looks past
     double reach() const { return thickness_ + margin(); }  // m: the list's radius
     // True when some particle has moved more than half the margin since the list was built
@@ -67,7 +87,11 @@ class SelfCollision {
     static constexpr std::size_t search_chunks = 16;  // fixed: the split never shows
     void rebuild_joined_pairs(const Cloth& cloth);
     bool joined(std::uint32_t a, std::uint32_t b) const;
-    std::size_t hash_cell(long long cx, long long cy, long long cz) const;
+    // Integer cell coordinate, clamped so that far-flung (but finite) particles cannot
+    // overflow the conversion; cells that far out only ever hold the particles that flew there.
+    static long long cell_coordinate(double position, double cell_size);
+    // A cell's slot in a table of mask + 1 slots (a power of two).
+    static std::size_t hash_cell(long long cx, long long cy, long long cz, std::size_t mask);
 
     double thickness_;
     std::size_t slot_mask_ = 0;                    // hash table size - 1 (a power of two)
@@ -82,6 +106,12 @@ class SelfCollision {
     std::vector<std::pair<std::uint32_t, std::uint32_t>> candidates_;
     std::vector<Vec3> built_at_;  // m: the positions the list was built at
     std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found_by_chunk_;
+    // The swept pass's: each particle's box of cells, its table of cells and its pairs.
+    std::vector<std::array<long long, 3>> swept_low_, swept_high_;
+    std::vector<std::uint32_t> swept_cell_start_;
+    std::vector<std::uint32_t> swept_entries_;
+    std::vector<std::uint32_t> swept_slots_;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> swept_candidates_;
 };
 
 }  // namespace weft

@@ -60,12 +60,16 @@ StepReport Simulation::step() {
     field_.drag = drag_.active() ? &drag_ : nullptr;
     field_.colliders =
         has_repulsion_ ? std::span<const Collider>(colliders_) : std::span<const Collider>();
+    field_.solids = colliders_;
     const bool check_runaway_stretch = !scene_.tear_max_stretch;
     workspace_.sweep_request = divergence_guard_.sweep_request(cloth_, check_runaway_stretch);
     workspace_.sweep_result.reset();
+    // Self-collision judges the step by where each particle went from (self_collision.h).
+    if (self_collision_) step_start_ = cloth_.positions;
     step_function_(cloth_, field_, dt_, workspace_);
     field_.drag = nullptr;
     field_.colliders = {};
+    field_.solids = {};
     // Corrections of positions and velocities after the step; any of them makes the history
     // the Verlets carry stale.
     std::size_t corrections = 0;
@@ -74,7 +78,7 @@ StepReport Simulation::step() {
     if (!colliders_.empty()) report.contacts += resolve_impulse_contacts(colliders_, cloth_);
     // Self-collision goes after the contacts and keeps the particles out of the solids itself.
     if (self_collision_)
-        report.contacts += self_collision_->resolve(cloth_, colliders_, pool_.get());
+        report.contacts += self_collision_->resolve(cloth_, colliders_, pool_.get(), step_start_);
     corrections += report.contacts;
     time_ += dt_;
     ++steps_taken_;

@@ -137,6 +137,7 @@ class Simulation {
     std::vector<SpringGroup> switched_off_;  // families switched off, kept with their tears
     bool has_repulsion_ = false;             // any collider with the repulsion response
     std::optional<SelfCollision> self_collision_;
+    std::vector<Vec3> step_start_;  // m: positions before the step, for self-collision
     DivergenceGuard divergence_guard_;
     double time_ = 0.0;
     std::uint64_t steps_taken_ = 0;

@@ -29,3 +29,27 @@ inline void multiply_symmetric_block(const double* a, const double* v, double* o
     out[1] = a[3] * v[0] + a[1] * v[1] + a[5] * v[2];
     out[2] = a[4] * v[0] + a[5] * v[1] + a[2] * v[2];
 }
+
+// a = S a S with S = I - n nᵀ (n unit, or zero: then a is left exactly as it was): the block
+// seen from the plane normal to n, for a particle whose velocity along n is held.
+inline void project_symmetric_block(double* a, const double* n) {
+    double an[3];  // a n
+    multiply_symmetric_block(a, n, an);
+    const double n_a_n = n[0] * an[0] + n[1] * an[1] + n[2] * an[2];  // nᵀ a n
+    // S a S = a - n (a n)ᵀ - (a n) nᵀ + (nᵀ a n) n nᵀ, entry by entry.
+    constexpr int row[6] = {0, 1, 2, 0, 0, 1};
+    constexpr int col[6] = {0, 1, 2, 1, 2, 2};
+    for (int e = 0; e < 6; ++e)
+        a[e] =
+            a[e] - n[row[e]] * an[col[e]] - an[row[e]] * n[col[e]] + n_a_n * n[row[e]] * n[col[e]];
+}
+
+// a += scale n nᵀ.
+inline void add_outer_product(double* a, const double* n, double scale) {
+    a[0] += scale * n[0] * n[0];
+    a[1] += scale * n[1] * n[1];
+    a[2] += scale * n[2] * n[2];
+    a[3] += scale * n[0] * n[1];
+    a[4] += scale * n[0] * n[2];
+    a[5] += scale * n[1] * n[2];
+}

@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 
 #include "raster/strain_colour.h"
+#include "view/lone_springs.h"
 
 namespace weft::view {
 
@@ -36,6 +37,7 @@ void ClothView::rebuild_topology(const Cloth& cloth) {
     wireframe_edges_ = raster::unique_edges(intact_triangles_);
     raster::find_vertex_triangles(intact_triangles_, positions_.size(), triangles_around_);
     face_normals_.resize(intact_triangles_.size());
+    lone_springs_ = find_lone_springs(cloth, uvs_, intact_triangles_, triangles_around_);
 }
 
 void ClothView::update(const Cloth& cloth, WorkerPool* pool) {

@@ -37,6 +37,9 @@ class ClothView {
     // warm when stretched, cool when compressed. Recomputed on each call.
     std::span<const raster::LineIndices> spring_lines() const { return spring_lines_; }
     std::span<const raster::Rgba8> spring_colours(const Cloth& cloth);
+    // The springs the shaded surface does not show, with no intact triangle along them at an
+    // end (lone_springs.h): what holds a piece that hangs by a thread after a cut or a tear.
+    std::span<const raster::LineIndices> lone_springs() const { return lone_springs_; }
 
     // Scratch for the frame renderer: the mesh transformed for the current frame, its
     // triangles binned by band, and the spheres transformed, kept so that drawing allocates
@@ -58,6 +61,7 @@ class ClothView {
     std::vector<raster::Rgba8> particle_colours_;
     std::vector<raster::LineIndices> spring_lines_;
     std::vector<raster::Rgba8> spring_line_colours_;
+    std::vector<raster::LineIndices> lone_springs_;
     std::size_t spring_count_ = 0;
     std::size_t triangle_count_ = 0;
     raster::PreparedMesh prepared_mesh_;

@@ -137,6 +137,7 @@ void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera
     // would transform all their vertices again, which costs more than drawing them once.
     auto draw_lines = [&] {
         raster::LineStyle lines;
+        lines.on_surface = true;  // all of them lie in the cloth's surface
         if (options.wireframe)
             raster::draw_indexed_lines(framebuffer, camera, view.positions(),
                                        view.wireframe_edges(), raster::Rgba8{20, 20, 24, 255},
@@ -144,6 +145,10 @@ void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera
         if (options.strain_springs)
             raster::draw_indexed_lines(framebuffer, camera, view.positions(), view.spring_lines(),
                                        spring_colours, lines);
+        else if ((options.shaded || options.wireframe) && !view.lone_springs().empty())
+            // A thread of the fabric's colour: a piece hanging by it must not seem to float.
+            raster::draw_indexed_lines(framebuffer, camera, view.positions(), view.lone_springs(),
+                                       raster::to_rgba8(options.surface.front_colour), lines);
         if (options.particles)
             raster::draw_points(framebuffer, camera, view.positions(), particle_colours, 4.0f,
                                 lines);

@@ -27,6 +27,10 @@ check "pinned corner stays" test "$(sed -n 2p "$work/state.csv" | cut -d, -f6-8)
 expect 0 quiet -- --headless "$scenes/hanging_sheet.toml" --steps 0 --dump "$work/initial.csv"
 check "zero steps keeps the initial velocities" awk -F, 'NR > 1 && ($6 != 0 || $7 != 0 || $8 != 0) { exit 1 }' "$work/initial.csv"
 
+# No scene given: the default one, as in the window.
+expect 0 quiet -- --headless --steps 0 --dump "$work/default.csv"
+check "headless without a scene runs the default" cmp -s "$work/default.csv" "$work/initial.csv"
+
 # Divergence: explicit Euler on the stiff sheet without damping blows up -> status 3.
 expect 3 '^diverged at t=[0-9.]+: ' -- --headless "$scenes/stiff_sheet.toml" --steps 1000 \
   --set solver.integrator=explicit-euler --set springs.structural.damping=0
@@ -95,7 +99,17 @@ expect 2 '^error: .*: --replay takes the scene from the recording' -- --headless
 expect 2 '^error: --set: ' -- --replay "$work/session.toml" --set solver.dt=0.001
 expect 2 '^error: --compare: expects METHOD' -- --compare leapfrog
 expect 2 '^error: --compare: expects a dt' -- --compare rk4=0
-expect 2 '^error: --compare: only applies in the window' -- --headless "$scenes/hanging_sheet.toml" --steps 1 --compare rk4
+# Headless, --compare draws copies beside the main run in the screenshot and changes nothing
+# else: the dump is the main run's, bit for bit the same as without them.
+expect 0 quiet -- --headless "$scenes/hanging_sheet.toml" --steps 200 --dump "$work/alone.csv" \
+  --screenshot "$work/alone.png" --size 320x180
+expect 0 quiet -- --headless "$scenes/hanging_sheet.toml" --steps 200 --dump "$work/beside.csv" \
+  --screenshot "$work/beside.png" --size 320x180 --compare rk4 --compare verlet=0.0005
+check "copies leave the main run's dump as it was" cmp -s "$work/alone.csv" "$work/beside.csv"
+check "copies are drawn in the screenshot" bash -c "test -s '$work/beside.png' && ! cmp -s '$work/alone.png' '$work/beside.png'"
+expect 0 quiet -- --headless --replay "$work/session.toml" --compare rk4 --screenshot "$work/replay.png" --size 320x180
+check "a replay beside a copy still matches" grep -q "matches the recording" "$work/out"
+check "a replay beside a copy draws it" test -s "$work/replay.png"
 expect 2 '^error: --record: only applies in the window' -- --headless "$scenes/hanging_sheet.toml" --steps 1 --record "$work/r.toml"
 
 echo "$passes passed, $failures failed"

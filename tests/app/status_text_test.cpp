@@ -2,6 +2,8 @@
 // agreement, and printf's own "%.1e" rounding to two significant digits written out by hand.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "app/status_text.h"
 #include "sim/scene.h"
 
@@ -21,6 +23,13 @@ TEST(StatusText, LinearSolveShowsIterationsAndTheResidualToTwoDigits) {
     EXPECT_EQ(linear_solve_text({1, 0.0123456}), "solve: 1 iteration, residual 1.2e-02");
     EXPECT_EQ(linear_solve_text({500, 9.96e-9}), "solve: 500 iterations, residual 1.0e-08");
     EXPECT_EQ(linear_solve_text({0, 0.0}), "solve: 0 iterations, residual 0.0e+00");
+}
+
+TEST(StatusText, StretchSaysWhatIsStretchedAndOverWhat) {
+    EXPECT_EQ(stretch_text(1.376), "most stretched spring: rest + 37.6 %");
+    EXPECT_EQ(stretch_text(1.0), "most stretched spring: rest + 0.0 %");
+    EXPECT_EQ(stretch_text(0.98), "most stretched spring: rest - 2.0 %");
+    EXPECT_EQ(stretch_text(std::nan("")), "most stretched spring: none (no springs)");
 }
 
 TEST(StatusText, SignsTheWindowsFontLacksAreSpelledInAscii) {

@@ -77,7 +77,7 @@ xdotool keydown --window "$window" Left; sleep 0.4; xdotool keyup --window "$win
 sleep 0.3
 xdotool key --window "$window" F12
 sleep 0.5
-xdotool key --window "$window" Home   # back to the scene's camera before quitting
+xdotool key --window "$window" c      # back to the scene's camera before quitting
 quit_weft
 shots=("$work"/rest/weft-screenshot-*.png)
 check test "${#shots[@]}" -eq 2

@@ -28,6 +28,8 @@ for study in precision invariants stability throughput replay realtime; do
   expect 0 quiet -- $study --help --out "$work/x"
   check "$study --help starts with its usage" test "$(sed -n 2p "$work/out" | awk '{ print $1, $2 }')" = "weft-bench $study"
   expect 0 quiet -- $study --repeats 0 -h
+  expect 0 quiet -- $study --version
+  check "$study --version prints the project version" test "$(cat "$work/out")" = "weft-bench $version"
 done
 expect 2 "^error: unknown study 'precisoin'" -- precisoin --help
 

@@ -96,7 +96,7 @@ TEST_P(ConvergenceOrder, WithSpringDampingAndDrag) {
     expect_order(spring);
 }
 
-INSTANTIATE_TEST_SUITE_P(AllIntegrators, ConvergenceOrder,
+INSTANTIATE_TEST_SUITE_P(Each, ConvergenceOrder,
                          ::testing::Values(OrderCase{Integrator::explicit_euler, 1e-3, 1.0},
                                            OrderCase{Integrator::symplectic_euler, 1e-3, 1.0},
                                            OrderCase{Integrator::verlet, 4e-3, 2.0},
@@ -148,7 +148,7 @@ TEST_P(SheetConvergenceOrder, AllSpringFamiliesDamped) {
         << integrator_name(c.integrator) << " errors " << errors[0] << " ... " << errors[3];
 }
 
-INSTANTIATE_TEST_SUITE_P(AllIntegrators, SheetConvergenceOrder,
+INSTANTIATE_TEST_SUITE_P(Each, SheetConvergenceOrder,
                          ::testing::Values(OrderCase{Integrator::explicit_euler, 2e-4, 1.0},
                                            OrderCase{Integrator::symplectic_euler, 2e-4, 1.0},
                                            OrderCase{Integrator::verlet, 1e-3, 2.0},

@@ -2,6 +2,7 @@
 // tearing and dragging included.
 #include <gtest/gtest.h>
 
+#include "same_bits.h"
 #include "sim/grid_force_pass.h"
 #include "sim/scene_loader.h"
 #include "sim/simulation.h"
@@ -114,24 +115,12 @@ TEST(Determinism, EveryIntegratorGivesTheSameBitsOnOneAndTwoThreads) {
 }
 
 TEST(Determinism, TheGeneralPassOnAnOffsetSheetGivesTheSameBitsOnAnyThreadCount) {
-    const std::uint64_t one = large_sheet_hash(1, Layout::offset);
-    ASSERT_NE(one, 0u);
-    EXPECT_EQ(large_sheet_hash(2, Layout::offset), one);
-    EXPECT_EQ(large_sheet_hash(3, Layout::offset), one);
+    testing::expect_same_bits_on_any_thread_count(
+        [](int threads) { return large_sheet_hash(threads, Layout::offset); });
 }
 
 TEST(Determinism, EveryKernelBuildGivesTheSameStateBitForBit) {
-    if (supported_simd_level() == SimdLevel::baseline) GTEST_SKIP() << "no AVX2 on this CPU";
-    const SimdLevel before = simd_level();
-    set_simd_level(SimdLevel::baseline);
-    const std::uint64_t baseline = large_sheet_hash(2);
-    ASSERT_NE(baseline, 0u);
-    for (SimdLevel level : {SimdLevel::avx2, SimdLevel::avx512}) {
-        if (level > supported_simd_level()) continue;
-        set_simd_level(level);
-        EXPECT_EQ(large_sheet_hash(2), baseline) << simd_level_name(level);
-    }
-    set_simd_level(before);
+    testing::expect_same_bits_on_every_kernel_build([] { return large_sheet_hash(2); });
 }
 
 TEST(Determinism, TheHashSeesEveryBit) {

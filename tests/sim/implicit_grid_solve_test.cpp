@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <random>
 
+#include "same_bits.h"
 #include "sim/divergence.h"
 #include "sim/drag.h"
 #include "sim/scene_loader.h"
@@ -96,24 +97,11 @@ std::uint64_t implicit_sheet_hash(int threads) {
 }
 
 TEST(ImplicitGridSolve, OneTwoAndThreeThreadsGiveTheSameBits) {
-    const std::uint64_t one = implicit_sheet_hash(1);
-    ASSERT_NE(one, 0u);
-    EXPECT_EQ(implicit_sheet_hash(2), one);
-    EXPECT_EQ(implicit_sheet_hash(3), one);
+    testing::expect_same_bits_on_any_thread_count(implicit_sheet_hash);
 }
 
 TEST(ImplicitGridSolve, EveryKernelBuildGivesTheSameBits) {
-    if (supported_simd_level() == SimdLevel::baseline) GTEST_SKIP() << "no AVX2 on this CPU";
-    const SimdLevel before = simd_level();
-    set_simd_level(SimdLevel::baseline);
-    const std::uint64_t baseline = implicit_sheet_hash(2);
-    ASSERT_NE(baseline, 0u);
-    for (SimdLevel level : {SimdLevel::avx2, SimdLevel::avx512}) {
-        if (level > supported_simd_level()) continue;
-        set_simd_level(level);
-        EXPECT_EQ(implicit_sheet_hash(2), baseline) << simd_level_name(level);
-    }
-    set_simd_level(before);
+    testing::expect_same_bits_on_every_kernel_build([] { return implicit_sheet_hash(2); });
 }
 
 TEST(ImplicitGridSolve, AHangingChainComesToRestAtItsExactStaticExtension) {

@@ -63,7 +63,7 @@ TEST_P(HangingSpringMatchesClosedForm, WithSpringDampingAndDrag) {
     EXPECT_LT(worst, 1e-3 * amplitude) << integrator_name(c.integrator);
 }
 
-INSTANTIATE_TEST_SUITE_P(AllIntegrators, HangingSpringMatchesClosedForm,
+INSTANTIATE_TEST_SUITE_P(Each, HangingSpringMatchesClosedForm,
                          ::testing::Values(OscillatorCase{Integrator::explicit_euler, 1e-6},
                                            OscillatorCase{Integrator::symplectic_euler, 1e-5},
                                            OscillatorCase{Integrator::verlet, 1e-3},

@@ -64,7 +64,7 @@ void ImplicitGridSolver::prepare(int grid_rows, int grid_cols) {
     // Two rows and two columns either way, rounded to whole vectors of sixteen floats.
     pad = (2 * static_cast<std::size_t>(cols) + 2 + 15) / 16 * 16;
     stride = (count + 2 * pad + 15) / 16 * 16;
-    constexpr int arrays = 4 * implicit_kernel::max_directions + 2 + 6 + 6 + 9 * 3;
+    constexpr int arrays = 4 * implicit_kernel::max_directions + 2 + 6 + 6 + 10 * 3;
     storage.assign(stride * arrays, 0.0f);
     row_sums.assign(4 * static_cast<std::size_t>(rows), 0.0);
     static_forces.assign(count, Vec3(0.0));
@@ -90,6 +90,7 @@ ImplicitGridSolver& ImplicitGridSolver::operator=(const ImplicitGridSolver& othe
     zero_velocities = other.zero_velocities;
     job = other.job;
     multilevel = other.multilevel;
+    contacts = other.contacts;
     has_previous_change = other.has_previous_change;
     last_iterations = other.last_iterations;
     last_relative_residual = other.last_relative_residual;
@@ -127,6 +128,7 @@ void ImplicitGridSolver::bind() {
     job.direction = take3();
     job.applied = take3();
     job.product = take3();
+    job.contact_normal = take3();
 }
 
 bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
@@ -204,68 +206,94 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
         }
     }
 
+    // Particles held on the solids' surfaces (implicit_contacts.h): before the residual
+    // pass, whose preconditioner is filtered for them.
+    if (!field.solids.empty() || !solver.contacts.held.empty())
+        solver.contacts.hold(cloth, field.solids, field.gravity, dt, job);
+
     const int rows = solver.rows;
     double* sums = solver.row_sums.data();
     const implicit_kernel::RowSums row_sums{sums, sums + rows, sums + 2 * rows, sums + 3 * rows};
-    ImplicitMultilevel::detach(job);
     const auto residual =
         kernel_of(implicit_kernel::residual_rows_baseline, implicit_kernel::residual_rows_avx2,
                   implicit_kernel::residual_rows_avx512);
-    over_rows(solver, pool, [&](int begin, int end) { residual(job, begin, end, row_sums); });
-    double r_z = sum_rows(row_sums.first, rows);
-    double r_r = sum_rows(row_sums.second, rows);
-    double largest_z = largest_of_rows(row_sums.largest, rows);
-    const bool multilevel = settings.multilevel;
-    if (multilevel) {
-        // The coarse levels need the fine diagonal blocks of the pass just run; from here
-        // on the update passes restrict their residual into the first level on the way.
-        solver.multilevel.weight = settings.coarse_weight;
-        solver.multilevel.build(job, pool);
-        r_z += solver.multilevel.apply(job, false, pool);
-        solver.multilevel.attach(job);
-    }
-    const double scale = std::sqrt(sum_rows(row_sums.third, rows));
-    const double target = settings.tolerance(dt) * scale;
-
-    // Preconditioned conjugate gradient (block Jacobi plus the coarse levels), in single
-    // precision; the scalars and every sum in double.
-    for (float* array : {job.direction.x, job.direction.y, job.direction.z, job.product.x,
-                         job.product.y, job.product.z})
-        std::fill(array, array + solver.stride, 0.0f);
     const auto direction =
         kernel_of(implicit_kernel::direction_rows_baseline, implicit_kernel::direction_rows_avx2,
                   implicit_kernel::direction_rows_avx512);
     const auto update =
         kernel_of(implicit_kernel::update_rows_baseline, implicit_kernel::update_rows_avx2,
                   implicit_kernel::update_rows_avx512);
-    double beta = 0.0;
-    int iteration = 0;
+    const bool multilevel = settings.multilevel;
     // The local bound (ImplicitSolveSettings): the largest velocity error a particle may
     // keep, by the block-Jacobi estimate. Not for a fixed tolerance, which studies ask for
     // alone.
     const bool bound_locally =
         settings.fixed_tolerance <= 0.0 && settings.position_tolerance > 0.0 && cloth.spacing > 0.0;
     const double largest_velocity_error = settings.position_tolerance * cloth.spacing / dt;
-    auto converged = [&] {
-        return std::sqrt(r_r) <= target &&
-               (!bound_locally || std::sqrt(largest_z) <= largest_velocity_error);
-    };
-    while (!converged() && iteration < settings.max_iterations) {
-        const auto beta_f = static_cast<float>(beta);
-        over_rows(solver, pool,
-                  [&](int begin, int end) { direction(job, begin, end, beta_f, row_sums); });
-        const double curvature = sum_rows(row_sums.first, rows);
-        if (!(curvature > 0.0)) break;  // not positive definite (or NaN): the guard will see
-        const auto alpha_f = static_cast<float>(r_z / curvature);
-        over_rows(solver, pool,
-                  [&](int begin, int end) { update(job, begin, end, alpha_f, row_sums); });
-        double next_r_z = sum_rows(row_sums.first, rows);
-        if (multilevel) next_r_z += solver.multilevel.apply(job, true, pool);
+    int iteration = 0;
+    double r_r = 0.0, scale = 0.0;
+
+    // Preconditioned conjugate gradient (block Jacobi plus the coarse levels), in single
+    // precision; the scalars and every sum in double; from the guess in job.solution.
+    auto solve = [&](bool first_round) {
+        ImplicitMultilevel::detach(job);
+        over_rows(solver, pool, [&](int begin, int end) { residual(job, begin, end, row_sums); });
+        double r_z = sum_rows(row_sums.first, rows);
         r_r = sum_rows(row_sums.second, rows);
-        largest_z = largest_of_rows(row_sums.largest, rows);
-        beta = r_z > 0.0 ? next_r_z / r_z : 0.0;
-        r_z = next_r_z;
-        ++iteration;
+        double largest_z = largest_of_rows(row_sums.largest, rows);
+        if (multilevel) {
+            // The coarse levels need the fine diagonal blocks of the pass just run (the
+            // same in every round); from here on the update passes restrict their residual
+            // into the first level on the way.
+            if (first_round) {
+                solver.multilevel.weight = settings.coarse_weight;
+                solver.multilevel.build(job, pool);
+            }
+            r_z += solver.multilevel.apply(job, false, pool);
+            solver.multilevel.attach(job);
+        }
+        scale = std::sqrt(sum_rows(row_sums.third, rows));
+        const double target = settings.tolerance(dt) * scale;
+        for (float* array : {job.direction.x, job.direction.y, job.direction.z, job.product.x,
+                             job.product.y, job.product.z})
+            std::fill(array, array + solver.stride, 0.0f);
+        double beta = 0.0;
+        auto converged = [&] {
+            return std::sqrt(r_r) <= target &&
+                   (!bound_locally || std::sqrt(largest_z) <= largest_velocity_error);
+        };
+        while (!converged() && iteration < settings.max_iterations) {
+            const auto beta_f = static_cast<float>(beta);
+            over_rows(solver, pool,
+                      [&](int begin, int end) { direction(job, begin, end, beta_f, row_sums); });
+            const double curvature = sum_rows(row_sums.first, rows);
+            if (!(curvature > 0.0)) break;  // not positive definite (or NaN): the guard will see
+            const auto alpha_f = static_cast<float>(r_z / curvature);
+            over_rows(solver, pool,
+                      [&](int begin, int end) { update(job, begin, end, alpha_f, row_sums); });
+            double next_r_z = sum_rows(row_sums.first, rows);
+            if (multilevel) next_r_z += solver.multilevel.apply(job, true, pool);
+            r_r = sum_rows(row_sums.second, rows);
+            largest_z = largest_of_rows(row_sums.largest, rows);
+            beta = r_z > 0.0 ? next_r_z / r_z : 0.0;
+            r_z = next_r_z;
+            ++iteration;
+        }
+    };
+    solve(true);
+    if (job.has_contacts) {
+        // The surfaces' impulses: where one pulled, its particle is let go and the step
+        // solved again from where it stands (implicit_contacts.h); then friction.
+        const auto unfiltered = kernel_of(implicit_kernel::unfiltered_product_rows_baseline,
+                                          implicit_kernel::unfiltered_product_rows_avx2,
+                                          implicit_kernel::unfiltered_product_rows_avx512);
+        over_rows(solver, pool, [&](int begin, int end) { unfiltered(job, begin, end); });
+        if (solver.contacts.let_go_of_pulled(job) > 0) {
+            solve(false);
+            if (job.has_contacts)
+                over_rows(solver, pool, [&](int begin, int end) { unfiltered(job, begin, end); });
+        }
+        solver.contacts.apply_friction(cloth, job);
     }
     solver.last_iterations = iteration;
     solver.last_relative_residual = scale > 0.0 ? std::sqrt(r_r) / scale : 0.0;

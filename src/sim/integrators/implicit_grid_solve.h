@@ -18,6 +18,7 @@
 #include "parallel/worker_pool.h"
 #include "sim/cloth.h"
 #include "sim/implicit_grid_kernel.h"
+#include "sim/integrators/implicit_contacts.h"
 #include "sim/integrators/implicit_multilevel.h"
 
 namespace weft {
@@ -70,6 +71,7 @@ struct ImplicitGridSolver {
     std::vector<Vec3> zero_velocities;
     implicit_kernel::Job job;
     ImplicitMultilevel multilevel;
+    ImplicitContacts contacts;
     bool has_previous_change = false;  // guess_change holds a previous step's Δv
     // How the last solve went.
     int last_iterations = 0;
@@ -89,7 +91,8 @@ struct ImplicitGridSolver {
 
 // One implicit Euler step of the structured solve, or false, touching nothing, when it
 // cannot take it: no usable grid stencil, or repulsion contacts (forces the general path
-// takes explicitly).
+// takes explicitly). Particles about to meet the field's impulse solids are held on their
+// surfaces inside the solve (implicit_contacts.h).
 bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
                               const ImplicitSolveSettings& settings, ImplicitGridSolver& solver,
                               WorkerPool* pool);

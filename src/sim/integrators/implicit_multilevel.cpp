@@ -5,6 +5,7 @@
 namespace weft {
 namespace {
 
+#include "sim/contact_filter.inl"
 #include "sim/symmetric_block.inl"
 
 // The four forward neighbour offsets of a coarse node, (row, col).
@@ -331,6 +332,13 @@ double ImplicitMultilevel::apply(const implicit_kernel::Job& job, bool restricte
                 add_masked(job.preconditioned.x + base, job.free + base, x, job.cols);
                 add_masked(job.preconditioned.y + base, job.free + base, x + cols, job.cols);
                 add_masked(job.preconditioned.z + base, job.free + base, x + 2 * cols, job.cols);
+                // z stays in the filtered space: S P x_c at particles held on a surface.
+                // (r · S P x_c = r · P x_c, r being filtered: the sum above holds.)
+                if (job.has_contacts)
+                    filter_contacts_row(job.contact_normal.x + base, job.contact_normal.y + base,
+                                        job.contact_normal.z + base, job.preconditioned.x + base,
+                                        job.preconditioned.y + base, job.preconditioned.z + base,
+                                        job.cols);
             }
         }
     });

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Redraws the README's headless images (docs/images) with the commands the README gives for
+# them, into OUT_DIR (default docs/images), with WEFT (default build/release/src/app/weft).
+# The window's own screenshots (demo-window.png) are taken by hand in the window (Shift+F12).
+# tests/readme_images_test.sh runs it into a scratch folder and compares.
+usage="scripts/readme-images.sh [OUT_DIR]"
+source "$(dirname "$0")/help_or_version.sh"
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out=${1:-docs/images}
+weft=${WEFT:-build/release/src/app/weft}
+scenes=assets/scenes
+mkdir -p "$out"
+"$weft" --headless "$scenes/hanging_sheet.toml" --steps 500 --size 1280x720 \
+  --screenshot "$out/hanging-sheet-500-steps.png"
+"$weft" --headless "$scenes/hanging_sheet.toml" --steps 500 --size 1280x720 \
+  --set camera.position=[1.9,0.2,-1.2] --set camera.target=[0,-0.1,-0.1] \
+  --screenshot "$out/hanging-sheet-500-steps-back.png"
+for scene in sheet_on_sphere tablecloth drape_self_collision self_fold; do
+  "$weft" --headless "$scenes/$scene.toml" --steps 8000 --size 960x540 \
+    --screenshot "$out/scene-$scene.png"
+done
+"$weft" --headless "$scenes/slope.toml" --steps 5000 --size 960x540 \
+  --screenshot "$out/scene-slope.png"
+"$weft" --headless --replay assets/sessions/tear.toml --size 960x540 \
+  --screenshot "$out/torn-sheet.png" >/dev/null
+"$weft" --headless --replay assets/sessions/tear.toml --compare rk4 --size 1280x540 \
+  --screenshot "$out/side-by-side.png" >/dev/null

@@ -1,5 +1,6 @@
-// Table of contents: controls table · statistics · solver · materials · forces · tearing and
-// limits · view · scenes · help overlay.
+// Table of contents: controls table · run buttons · solver · materials · tearing and limits
+// · side by side · record and replay · view · scenes · save · the panel's layout · help
+// overlay. The statistics, forces, colliders and grid sections are in panel_*_section.cpp.
 #include "app/control_panel.h"
 
 #include <imgui.h>
@@ -11,12 +12,11 @@
 #include <vector>
 
 #include "app/atomic_file.h"
-#include "app/edit_answer.h"
+#include "app/panel_sections.h"
+#include "app/panel_widgets.h"
 #include "app/screenshot_names.h"
 #include "app/session_record.h"
 #include "app/status_text.h"
-#include "sim/divergence.h"
-#include "sim/energy.h"
 #include "sim/stability_limit.h"
 
 namespace weft::app {
@@ -46,78 +46,21 @@ const char* const controls_text[][2] = {
 const int controls_count = static_cast<int>(std::size(controls_text));
 
 // The longest label beside a control; the label column is as wide as it.
-constexpr const char* widest_label = "wind heading (deg)";
+constexpr const char* widest_label = "field of view (deg)";
 
 namespace {
 
-// The last edit and, if it was refused, why: said under the control that made it.
-LastEdit last_edit;
-
-// Every edit goes through DemoState::change as a --set style override, checked exactly like a
-// scene file: a refused value (one typed past a slider's range with Ctrl+click, say) shows
-// its error and changes nothing. `key` also names the control for its refusal.
-void edit(DemoState& state, const std::string& key, const std::string& value) {
-    last_edit.answer(key, state.change({key + "=" + value}));
-}
-
-// Under the control named `control`, the refusal of its edit if that was the last edit:
-// whole, wrapped to the panel, where the eye already is.
-void refusal_below(std::string_view control) {
-    const std::string& refusal = last_edit.refusal_under(control);
-    if (!refusal.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", refusal.c_str());
-}
-
-std::string number(double value) {
-    char text[40];
-    std::snprintf(text, sizeof text, "%.17g", value);
-    return text;
-}
-
-std::string vec3(const Vec3d& v) {
-    char text[80];
-    std::snprintf(text, sizeof text, "[%.17g,%.17g,%.17g]", v[0], v[1], v[2]);
-    return text;
-}
-
-// A logarithmic slider over [low, high]; Ctrl+click types any value, which change() checks.
-bool slider_log(const char* label, double& value, double low, double high, const char* format) {
-    float v = static_cast<float>(value);
-    if (!ImGui::SliderFloat(label, &v, static_cast<float>(low), static_cast<float>(high), format,
-                            ImGuiSliderFlags_Logarithmic))
-        return false;
-    value = v;
-    return true;
-}
-
-// A linear slider over [low, high]; Ctrl+click types any value, which change() checks.
-bool slider(const char* label, double& value, double low, double high, const char* format) {
-    return ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &low, &high, format);
-}
-
-void statistics(DemoState& state) {
-    const DemoStatistics& s = state.statistics;
-    const Cloth& cloth = state.simulation.cloth();
-    ImGui::Text("%.0f fps   sim %.2f ms   raster %.2f ms", ImGui::GetIO().Framerate,
-                s.sim_seconds * 1e3, s.raster_seconds * 1e3);
-    ImGui::Text("%d steps/frame   t = %.2f s%s", s.steps, state.simulation.time(),
-                state.paused ? "   (paused)" : "");
-    ImGui::Text(
-        "%s, %s, %s",
-        counted(static_cast<long long>(cloth.particle_count()), "particle", "particles").c_str(),
-        counted(static_cast<long long>(cloth.spring_count()), "spring", "springs").c_str(),
-        counted(state.simulation.thread_count(), "thread", "threads").c_str());
-    // Implicit Euler's cost and accuracy per step hang on its conjugate-gradient solve.
-    if (auto solve = linear_solve_text(state.simulation)) ImGui::TextUnformatted(solve->c_str());
-    if (!s.energy.empty()) {
-        ImGui::Text("energy %.4g J", s.energy.back());
-        ImGui::PlotLines("##energy", s.energy.data(), static_cast<int>(s.energy.size()), 0, nullptr,
-                         FLT_MAX, FLT_MAX, ImVec2(0, 50));
-    }
-    // Measured, not coloured: the strain colours cost a 256² sheet's frame 7 % of its time.
-    ImGui::TextWrapped("%s", stretch_text(largest_stretch_ratio(cloth)).c_str());
-    if (state.recovery.recoveries > 0)
-        ImGui::TextColored(ImVec4(1, 0.6f, 0.2f, 1), "recovered from divergence %s",
-                           counted(state.recovery.recoveries, "time", "times").c_str());
+// The buttons beside the keys P, N and R, calling what the keys call.
+void run_buttons(DemoState& state) {
+    // "###pause": one button whose label says what a click does now.
+    if (ImGui::SmallButton(state.paused ? "resume (P)###pause" : "pause (P)###pause"))
+        state.toggle_pause();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!state.paused);  // one step is a paused run's
+    if (ImGui::SmallButton("step (N)")) state.step_once();
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (ImGui::SmallButton("reset (R)")) state.reset_simulation();
 }
 
 const char* const integrator_names[] = {
@@ -131,8 +74,7 @@ void solver(DemoState& state) {
         edit(state, "solver.integrator", integrator_names[current]);  // a bare word: a string
     refusal_below("solver.integrator");
     double dt_ms = sim.dt() * 1e3;
-    if (slider_log("dt (ms)", dt_ms, 0.01, 10.0, "%.3f"))
-        edit(state, "solver.dt", number(dt_ms * 1e-3));
+    if (slider_log("dt (ms)", dt_ms, 0.01, 10.0)) edit(state, "solver.dt", number(dt_ms * 1e-3));
     refusal_below("solver.dt");
     const double limit =
         estimated_step_limit(sim.cloth(), sim.force_field().air_drag, sim.integrator());
@@ -170,39 +112,18 @@ void materials(DemoState& state) {
             refusal_below(key + ".enabled");
         }
         double stiffness = spec.stiffness, damping = spec.damping;
-        if (slider_log("stiffness (N/m)", stiffness, 1.0, 1e5, "%.0f"))
+        if (slider_log("stiffness (N/m)", stiffness, 1.0, 1e5))
             edit(state, key + ".stiffness", number(stiffness));
         refusal_below(key + ".stiffness");
-        if (slider_log("damping (N s/m)", damping, 1e-4, 10.0, "%.4f"))
+        if (slider_log("damping (N s/m)", damping, 1e-4, 10.0))
             edit(state, key + ".damping", number(damping));
         refusal_below(key + ".damping");
         ImGui::PopID();
     }
     double mass_g = state.simulation.scene().cloth.particle_mass * 1e3;
-    if (slider_log("particle mass (g)", mass_g, 0.1, 1000.0, "%.2f"))
+    if (slider_log("particle mass (g)", mass_g, 0.1, 1000.0))
         edit(state, "cloth.particle_mass", number(mass_g * 1e-3));
     refusal_below("cloth.particle_mass");
-}
-
-void forces(DemoState& state) {
-    const ForcesSpec& f = state.simulation.scene().forces;
-    float gravity = static_cast<float>(f.gravity[1]);
-    if (ImGui::SliderFloat("gravity y (m/s2)", &gravity, -30.0f, 5.0f))
-        edit(state, "forces.gravity", vec3({f.gravity[0], gravity, f.gravity[2]}));
-    refusal_below("forces.gravity");
-    double air_drag = f.air_drag;
-    if (slider_log("air drag (N s/m)", air_drag, 1e-4, 1.0, "%.4f"))
-        edit(state, "forces.air_drag", number(air_drag));
-    refusal_below("forces.air_drag");
-    float strength = static_cast<float>(std::hypot(f.wind[0], f.wind[2]));
-    float heading = static_cast<float>(std::atan2(f.wind[2], f.wind[0]) * 180.0 / M_PI);
-    bool wind_changed = ImGui::SliderFloat("wind (m/s)", &strength, 0.0f, 20.0f);
-    wind_changed |= ImGui::SliderFloat("wind heading (deg)", &heading, -180.0f, 180.0f);
-    if (wind_changed)
-        edit(state, "forces.wind",
-             vec3({strength * std::cos(heading * M_PI / 180.0), f.wind[1],
-                   strength * std::sin(heading * M_PI / 180.0)}));
-    refusal_below("forces.wind");
 }
 
 // An optional feature table such as [tearing]: a checkbox for its presence, and under it a
@@ -210,7 +131,7 @@ void forces(DemoState& state) {
 // on is an edit like any other; switching it off removes the table, which is always valid.
 void optional_feature(DemoState& state, const char* label, const char* table, const char* key,
                       std::optional<double> Scene::*member, double shown, double low, double high,
-                      const char* format) {
+                      const char* suffix) {
     ImGui::PushID(table);
     const std::optional<double>& value = state.simulation.scene().*member;
     bool on = value.has_value();
@@ -222,41 +143,12 @@ void optional_feature(DemoState& state, const char* label, const char* table, co
         } else {
             Scene without = state.simulation.scene();
             without.*member = std::nullopt;
-            last_edit.answer(path, state.change_scene(without));
+            answer_edit(path, state.change_scene(without));
         }
     }
-    if (slider_log(key, v, low, high, format) && on) edit(state, path, number(v));
+    if (slider_log(key, v, low, high, suffix) && on) edit(state, path, number(v));
     refusal_below(path);
     ImGui::PopID();
-}
-
-void colliders(DemoState& state) {
-    const std::vector<ColliderSpec>& specs = state.simulation.scene().colliders;
-    if (specs.empty()) {
-        ImGui::TextDisabled("none in this scene");
-        return;
-    }
-    for (std::size_t c = 0; c < specs.size(); ++c) {
-        ImGui::PushID(static_cast<int>(c));
-        Scene wanted = state.simulation.scene();
-        ColliderSpec& spec = wanted.colliders[c];
-        const bool sphere = spec.type == ColliderType::sphere;
-        if (sphere)
-            ImGui::Text("sphere %zu at (%.2f, %.2f, %.2f) m%s", c, spec.center[0], spec.center[1],
-                        spec.center[2], c == 0 ? "  (Shift+W/A/S/D/Q/E moves it)" : "");
-        else
-            ImGui::Text("plane %zu through y = %.2f m", c, spec.point[1]);
-        int response = static_cast<int>(spec.response);
-        bool changed = ImGui::Combo("response", &response, "impulse\0repulsion\0");
-        spec.response = static_cast<ContactResponse>(response);
-        changed |= slider("restitution", spec.restitution, 0.0, 1.0, "%.2f");
-        changed |= slider("friction", spec.friction, 0.0, 2.0, "%.2f");
-        if (sphere) changed |= slider_log("radius (m)", spec.radius, 0.02, 2.0, "%.3f");
-        const std::string control = "colliders." + std::to_string(c);
-        if (changed) last_edit.answer(control, state.change_scene(wanted));
-        refusal_below(control);
-        ImGui::PopID();
-    }
 }
 
 void save(DemoState& state) {
@@ -312,12 +204,11 @@ void comparison(DemoState& state) {
         const std::string control = "copy." + std::to_string(c);
         if (ImGui::Combo("integrator", &current, integrator_names,
                          static_cast<int>(std::size(integrator_names))))
-            last_edit.answer(control, state.change_companion(c, {std::string("solver.integrator=") +
-                                                                 integrator_names[current]}));
+            answer_edit(control, state.change_companion(c, {std::string("solver.integrator=") +
+                                                            integrator_names[current]}));
         double dt_ms = copy.dt() * 1e3;
-        if (slider_log("dt (ms)", dt_ms, 0.01, 10.0, "%.3f"))
-            last_edit.answer(control,
-                             state.change_companion(c, {"solver.dt=" + number(dt_ms * 1e-3)}));
+        if (slider_log("dt (ms)", dt_ms, 0.01, 10.0))
+            answer_edit(control, state.change_companion(c, {"solver.dt=" + number(dt_ms * 1e-3)}));
         refusal_below(control);
         if (ImGui::Button("remove")) state.remove_companion(c);
         ImGui::PopID();
@@ -369,19 +260,19 @@ void session(DemoState& state) {
 
 void limits(DemoState& state) {
     optional_feature(state, "tearing", "tearing", "max_stretch", &Scene::tear_max_stretch, 1.6,
-                     1.05, 5.0, "%.2f x rest");
+                     1.05, 5.0, " x rest");
     optional_feature(state, "strain limit", "strain_limit", "max_stretch",
-                     &Scene::strain_limit_max_stretch, 0.1, 0.01, 1.0, "%.2f");
+                     &Scene::strain_limit_max_stretch, 0.1, 0.01, 1.0, "");
     optional_feature(state, "self-collision", "self_collision", "thickness",
-                     &Scene::self_collision_thickness, 0.01, 0.002, 0.1, "%.3f m");
+                     &Scene::self_collision_thickness, 0.01, 0.002, 0.1, " m");
     double radius = state.drag_radius;
-    if (slider_log("drag radius (m)", radius, 0.005, 0.5, "%.3f")) {
+    if (slider_log("drag radius (m)", radius, 0.005, 0.5)) {
         const bool taken = radius > 0.0 && radius <= 10.0;
         if (taken) state.drag_radius = radius;
-        last_edit.answer("drag_radius",
-                         taken ? std::nullopt
-                               : std::optional<std::string>(
-                                     "drag radius must be in (0, 10] m, got " + number(radius)));
+        answer_edit("drag_radius",
+                    taken ? std::nullopt
+                          : std::optional<std::string>("drag radius must be in (0, 10] m, got " +
+                                                       number(radius)));
     }
     refusal_below("drag_radius");
     if (ImGui::Button("release all pins (U)")) state.release_all_pins();
@@ -397,6 +288,10 @@ void view_toggles(DemoState& state) {
     ImGui::Checkbox("springs by strain", &o.strain_springs);
     ImGui::SameLine();
     ImGui::Checkbox("particles", &o.particles);
+    double fov = state.rig.fov_degrees;
+    if (slider("field of view (deg)", fov, 10.0, 120.0, "%.3g"))
+        answer_edit("camera.fov_degrees", state.change_field_of_view(fov));
+    refusal_below("camera.fov_degrees");
 }
 
 void scenes(DemoState& state) {
@@ -448,17 +343,17 @@ bool draw_control_panel(DemoState& state, const ScreenRect& area) {
     ImVec4 grab = style.Colors[ImGuiCol_SliderGrab];
     grab.w = 0.3f;
     ImGui::PushStyleColor(ImGuiCol_SliderGrab, grab);
-    // The scene's name, and reset beside it: at the top, where no section's height can push
-    // it out of sight.
+    // The scene's name, and under it pause, step and reset, each labelled with its key: at
+    // the top, where no section's height can push them out of sight.
     ImGui::TextUnformatted(state.simulation.scene().name.c_str());
-    ImGui::SameLine();
-    if (ImGui::SmallButton("reset (R)")) state.reset_simulation();
-    statistics(state);
+    run_buttons(state);
+    statistics_section(state);
     if (ImGui::CollapsingHeader("solver", ImGuiTreeNodeFlags_DefaultOpen)) solver(state);
     if (ImGui::CollapsingHeader("materials", ImGuiTreeNodeFlags_DefaultOpen)) materials(state);
-    if (ImGui::CollapsingHeader("forces")) forces(state);
+    if (ImGui::CollapsingHeader("grid (rebuilt on apply)")) grid_section(state);
+    if (ImGui::CollapsingHeader("forces")) forces_section(state);
     if (ImGui::CollapsingHeader("tearing, limits, pins")) limits(state);
-    if (ImGui::CollapsingHeader("colliders")) colliders(state);
+    if (ImGui::CollapsingHeader("colliders")) colliders_section(state);
     if (ImGui::CollapsingHeader("side by side")) comparison(state);
     if (ImGui::CollapsingHeader("record and replay")) session(state);
     if (ImGui::CollapsingHeader("view")) view_toggles(state);

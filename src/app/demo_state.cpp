@@ -1,5 +1,6 @@
 // Table of contents: construction · stepping with recovery · runs side by side · the hand ·
-// parameter changes · scenes (reset, load, save) · recording and replay.
+// parameter changes · scenes (reset, load, save) · recording and replay. Pausing and what
+// each frame measures are in demo_frame.cpp.
 #include "app/demo_state.h"
 
 #include <algorithm>
@@ -9,7 +10,6 @@
 
 #include "app/atomic_file.h"
 #include "app/hand_tools.h"
-#include "sim/energy.h"
 #include "sim/scene_loader.h"
 #include "sim/scene_writer.h"
 #include "sim/state_hash.h"
@@ -73,15 +73,6 @@ void DemoState::say(const std::string& text, Tone tone) {
     message_tone = tone;
     message_until = wall_now + 4.0;
     std::fprintf(stderr, "%s\n", text.c_str());
-}
-
-void DemoState::sample_energy(int steps) {
-    if (steps <= 0) return;
-    constexpr std::size_t samples_kept = 300;  // five seconds at 60 frames a second
-    std::vector<float>& energy = statistics.energy;
-    energy.push_back(
-        static_cast<float>(measure_energy(simulation.cloth(), simulation.force_field()).total()));
-    if (energy.size() > samples_kept) energy.erase(energy.begin());
 }
 
 // ---- stepping with recovery -----------------------------------------------------------------
@@ -394,6 +385,14 @@ std::optional<std::string> DemoState::apply(const SceneLoadResult& checked) {
     event.kind = ClothEvent::Kind::parameters;
     event.scene_toml = scene_to_toml(*checked.scene);
     perform(event);
+    return std::nullopt;
+}
+
+std::optional<std::string> DemoState::change_field_of_view(double degrees) {
+    const SceneLoadResult checked = load_scene_text(scene_to_toml(scene_to_save()), "panel",
+                                                    {"camera.fov_degrees=" + toml_number(degrees)});
+    if (!checked.ok()) return checked.error->message();
+    rig.fov_degrees = static_cast<float>(checked.scene->camera.fov_degrees);
     return std::nullopt;
 }
 

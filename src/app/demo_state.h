@@ -14,6 +14,7 @@
 
 #include "app/camera_rig.h"
 #include "app/cloth_event.h"
+#include "app/frame_plots.h"
 #include "app/hand_tools.h"
 #include "app/session_record.h"
 #include "app/step_clock.h"
@@ -30,7 +31,9 @@ struct DemoStatistics {
     double raster_seconds = 0.0;  // drawing in the last frame
     int steps = 0;                // steps in the last frame
     bool behind = false;          // the step budget cut the last frame short
-    std::vector<float> energy;    // J, total energy, one entry per frame that stepped
+    // largest spring length / rest length at the last frame's end (NaN without springs)
+    double stretch_ratio = 0.0;
+    FramePlots plots;  // energy, largest stretch and work per frame, over frames that stepped
 };
 
 // How a message on screen reads at a glance, by its colour: news that something worked must
@@ -126,7 +129,7 @@ struct DemoState {
     StepClock clock;
     Hand hand;
     bool paused = false;
-    bool single_step = false;
+    bool single_step = false;  // paused, one step is owed to the next frame
     bool show_help = false;
     double drag_radius = 0.08;  // m
 
@@ -181,6 +184,9 @@ struct DemoState {
     // The same for a whole scene (edits --set cannot name, such as a collider's fields): it
     // is written out and read back through the loader's checks before anything changes.
     std::optional<std::string> change_scene(const Scene& wanted);
+    // The camera's vertical field of view (degrees), checked like camera.fov_degrees in a
+    // scene file; the camera is the view's, not the simulation's, so nothing is recorded.
+    std::optional<std::string> change_field_of_view(double degrees);
     // Moves collider `index` by `offset` (m), as the keyboard does with a sphere.
     void move_collider(std::size_t index, const Vec3d& offset);
 
@@ -210,10 +216,21 @@ struct DemoState {
 
     void say(const std::string& text, Tone tone);  // a message on screen (and on stderr)
 
-    // One sample of the energy plot for a frame that took `steps` steps, measured from the
-    // main run; none for a frame that took none, so the plot holds still while paused
-    // instead of scrolling a flat line through time that did not pass.
-    void sample_energy(int steps);
+    // Pausing, for the P and N keys and the panel's buttons alike. step_once() owes the
+    // next frame one step if paused; running, it does nothing.
+    void toggle_pause();
+    void step_once();
+    // The steps this frame takes: the clock's plan for `elapsed` wall seconds, or while
+    // paused none, or the one step_once() owed (the clock then owes nothing, so resuming
+    // does not rush to catch up).
+    StepClock::Plan plan_frame(double elapsed, double seconds_per_step);
+
+    // Once a frame, after it is stepped and drawn (statistics.sim_seconds and
+    // raster_seconds set): measures the main run's largest stretch and, for a frame that
+    // took steps, adds a sample to each plot; a frame that took none adds none, so the plots
+    // hold still while paused instead of scrolling a flat line through time that did not
+    // pass.
+    void measure_frame(int steps);
 
   private:
     void perform(const ClothEvent& event);  // record it, then apply it to every run

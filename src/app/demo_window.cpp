@@ -176,10 +176,10 @@ bool handle_event(const SDL_Event& event, DemoState& state, Window& w) {
             case SDLK_ESCAPE:
                 return false;
             case SDLK_p:
-                state.paused = !state.paused;
+                state.toggle_pause();
                 break;
             case SDLK_n:
-                state.single_step = true;
+                state.step_once();
                 break;
             case SDLK_r:
                 state.reset_simulation();
@@ -423,14 +423,9 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
         // The camera may move under a held drag.
         state.pull(hand_point(state, w), columns_of(state, w).view());
 
-        // Step: as many fixed steps as keep simulated time with the clock, within budget.
-        StepClock::Plan plan =
-            state.clock.advance(elapsed, state.simulation.dt(), seconds_per_step);
-        if (state.paused) {
-            state.clock.reset();
-            plan = {state.single_step ? 1 : 0, false};
-            state.single_step = false;
-        }
+        // Step: as many fixed steps as keep simulated time with the clock, within budget;
+        // while paused, none but the one N or the panel's step button asked for.
+        const StepClock::Plan plan = state.plan_frame(elapsed, seconds_per_step);
         const double sim_start = now_seconds();
         const int steps = state.step(plan.steps);
         const double sim_seconds = now_seconds() - sim_start;
@@ -449,7 +444,6 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
         stats.behind = plan.behind;
         stats.sim_seconds = sim_seconds;
         stats.frame_seconds = elapsed;
-        state.sample_energy(steps);
 
         ImGui_ImplSDLRenderer_NewFrame();
         ImGui_ImplSDL2_NewFrame();
@@ -465,6 +459,7 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
         const double raster_start = now_seconds();
         present_frame(state, w);
         stats.raster_seconds = now_seconds() - raster_start;
+        state.measure_frame(steps);
         ImGui_ImplSDLRenderer_RenderDrawData(ImGui::GetDrawData());
         ++frames;
         if (plan.behind) ++frames_behind;

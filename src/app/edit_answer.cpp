@@ -1,5 +1,7 @@
 #include "app/edit_answer.h"
 
+#include "app/status_text.h"
+
 namespace weft::app {
 
 void LastEdit::answer(std::string_view control, const std::optional<std::string>& error) {
@@ -22,7 +24,8 @@ std::string refusal_text(std::string_view error) {
             if (colon != std::string_view::npos) error.remove_prefix(colon + 2);
         }
     }
-    return "refused: " + std::string(error);
+    // In signs the panel's font draws: the grid's limit reads "cloth.rows x cloth.cols".
+    return "refused: " + ascii_text(error);
 }
 
 }  // namespace weft::app

@@ -26,7 +26,8 @@ class LastEdit {
 };
 
 // The loader's error as the panel says it next to the control: "refused: " and the reason,
-// without the "error: --set KEY: " lead naming the setting the reader has just touched.
+// without the "error: --set KEY: " lead naming the setting the reader has just touched, and
+// in ASCII (ascii_text) so the panel's font draws every sign.
 std::string refusal_text(std::string_view error);
 
 }  // namespace weft::app

@@ -111,6 +111,12 @@ struct Scene {
     bool operator==(const Scene&) const = default;
 };
 
+// Canonical spellings in scene files: "grid" | "offset", "vertical" | "horizontal", and a
+// pin preset's ("none", "top-corners", "top-row"; nullptr for a list of pins, written as one).
+const char* layout_name(Layout layout);
+const char* orientation_name(Orientation orientation);
+const char* pin_preset_name(PinPreset preset);
+
 // Canonical spelling of an integrator in scene files ("symplectic-euler", ...).
 const char* integrator_name(Integrator integrator);
 // The integrator of that spelling, if any.

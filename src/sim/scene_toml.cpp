@@ -16,6 +16,28 @@
 
 namespace weft {
 
+const char* layout_name(Layout layout) {
+    return layout == Layout::grid ? "grid" : "offset";
+}
+
+const char* orientation_name(Orientation orientation) {
+    return orientation == Orientation::vertical ? "vertical" : "horizontal";
+}
+
+const char* pin_preset_name(PinPreset preset) {
+    switch (preset) {
+        case PinPreset::none:
+            return "none";
+        case PinPreset::top_corners:
+            return "top-corners";
+        case PinPreset::top_row:
+            return "top-row";
+        case PinPreset::list:
+            break;
+    }
+    return nullptr;
+}
+
 const char* integrator_name(Integrator integrator) {
     switch (integrator) {
         case Integrator::explicit_euler:

@@ -12,20 +12,6 @@ std::string vec3(const Vec3d& v) {
     return text.append("]");
 }
 
-const char* pins_preset(PinPreset preset) {
-    switch (preset) {
-        case PinPreset::none:
-            return "none";
-        case PinPreset::top_corners:
-            return "top-corners";
-        case PinPreset::top_row:
-            return "top-row";
-        case PinPreset::list:
-            break;
-    }
-    return nullptr;
-}
-
 void spring_family(std::ostringstream& out, const char* name, const SpringFamilySpec& spec,
                    bool always_on) {
     out << "\n[springs." << name << "]\n";
@@ -71,11 +57,10 @@ std::string scene_to_toml(const Scene& scene) {
     out << "rows = " << cloth.rows << "\ncols = " << cloth.cols << "\n";
     out << "spacing = " << toml_number(cloth.spacing) << "  # m\n";
     out << "particle_mass = " << toml_number(cloth.particle_mass) << "  # kg\n";
-    out << "layout = \"" << (cloth.layout == Layout::grid ? "grid" : "offset") << "\"\n";
-    out << "orientation = \""
-        << (cloth.orientation == Orientation::vertical ? "vertical" : "horizontal") << "\"\n";
+    out << "layout = \"" << layout_name(cloth.layout) << "\"\n";
+    out << "orientation = \"" << orientation_name(cloth.orientation) << "\"\n";
     out << "origin = " << vec3(cloth.origin) << "  # m\n";
-    if (const char* preset = pins_preset(cloth.pin_preset)) {
+    if (const char* preset = pin_preset_name(cloth.pin_preset)) {
         out << "pins = \"" << preset << "\"\n";
     } else {
         out << "pins = [";

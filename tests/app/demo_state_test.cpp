@@ -17,6 +17,7 @@
 #include "app/demo_state.h"
 #include "cloth_pieces.h"
 #include "raster/framebuffer.h"
+#include "shipped_demo.h"
 #include "sim/energy.h"
 #include "sim/scene_loader.h"
 #include "sim/stability_limit.h"
@@ -26,15 +27,6 @@ namespace weft::app {
 namespace {
 
 namespace fs = std::filesystem;
-
-const std::string scenes_dir = std::string(WEFT_SOURCE_DIR) + "/assets/scenes";
-
-DemoState demo(const std::string& scene_file = "hanging_sheet.toml") {
-    const std::string path = scenes_dir + "/" + scene_file;
-    SceneLoadResult loaded = load_scene_file(path);
-    EXPECT_TRUE(loaded.ok()) << (loaded.error ? loaded.error->message() : "");
-    return DemoState(path, {}, *loaded.scene);
-}
 
 bool finite_state(const Cloth& cloth) {
     for (std::size_t p = 0; p < cloth.particle_count(); ++p)
@@ -212,7 +204,7 @@ TEST(DemoState, AMovedSphereCarriesTheClothWithoutLettingItThrough) {
 
 TEST(DemoState, ASavedSceneLoadsBackToTheSameParameters) {
     ScratchFolder folder;
-    for (const auto& entry : fs::directory_iterator(scenes_dir)) {
+    for (const auto& entry : fs::directory_iterator(shipped_scenes_dir)) {
         if (entry.path().extension() != ".toml") continue;
         DemoState state = demo(entry.path().filename().string());
         ASSERT_FALSE(state.change({"springs.structural.damping=0.123456789012345678",
@@ -231,7 +223,7 @@ TEST(DemoState, ASavedSceneLoadsBackToTheSameParameters) {
 TEST(DemoState, SavingNeverReplacesAFileWithoutAskingAndLeavesNoTemporaryFiles) {
     ScratchFolder folder;
     const fs::path scene = folder.path / "mine.toml";
-    fs::copy_file(scenes_dir + "/hanging_sheet.toml", scene);
+    fs::copy_file(shipped_scenes_dir + "/hanging_sheet.toml", scene);
     const std::string original = read_file(scene);
     SceneLoadResult loaded = load_scene_file(scene.string());
     ASSERT_TRUE(loaded.ok());
@@ -567,25 +559,6 @@ TEST(DemoState, HopelessParametersAreSaidInTextTheWindowsFontDraws) {
     ASSERT_NE(state.message.find("restarted"), std::string::npos);
     EXPECT_EQ(state.message_tone, Tone::problem);
     EXPECT_TRUE(ascii_only(state.message)) << state.message;
-}
-
-TEST(DemoState, TheEnergyPlotHoldsStillWhilePaused) {
-    DemoState state = demo();
-    state.sample_energy(state.step(5));
-    ASSERT_EQ(state.statistics.energy.size(), 1u);
-    // Paused: frames take no steps, and the plot gains nothing (it used to scroll).
-    for (int frame = 0; frame < 50; ++frame) state.sample_energy(state.step(0));
-    EXPECT_EQ(state.statistics.energy.size(), 1u);
-    // A single step (N) is one sample, of the state after it.
-    state.sample_energy(state.step(1));
-    ASSERT_EQ(state.statistics.energy.size(), 2u);
-    EXPECT_EQ(
-        state.statistics.energy.back(),
-        static_cast<float>(
-            measure_energy(state.simulation.cloth(), state.simulation.force_field()).total()));
-    // Running: a sample a frame, the last five seconds' worth at 60 frames a second.
-    for (int frame = 0; frame < 400; ++frame) state.sample_energy(state.step(1));
-    EXPECT_EQ(state.statistics.energy.size(), 300u);
 }
 
 }  // namespace

@@ -44,5 +44,12 @@ TEST(EditAnswer, AMessageWithoutTheCommandLinesLeadIsKeptWhole) {
               "refused: panel: colliders[0].restitution must be in [0, 1], got 1.5");
 }
 
+TEST(EditAnswer, ARefusalIsInSignsThePanelsFontDraws) {
+    EXPECT_EQ(refusal_text("error: --set cloth.rows: cloth.rows \u00d7 cloth.cols = 10000000000 "
+                           "particles, more than the limit of 4194304"),
+              "refused: cloth.rows x cloth.cols = 10000000000 particles, more than the limit of "
+              "4194304");
+}
+
 }  // namespace
 }  // namespace weft::app

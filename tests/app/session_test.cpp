@@ -10,21 +10,13 @@
 
 #include "app/demo_state.h"
 #include "app/session_record.h"
+#include "shipped_demo.h"
 #include "sim/scene_loader.h"
 #include "sim/state_hash.h"
 #include "sim/topology_edits.h"
 
 namespace weft::app {
 namespace {
-
-const std::string scenes_dir = std::string(WEFT_SOURCE_DIR) + "/assets/scenes";
-
-DemoState demo(const std::string& scene_file = "hanging_sheet.toml") {
-    const std::string path = scenes_dir + "/" + scene_file;
-    SceneLoadResult loaded = load_scene_file(path);
-    EXPECT_TRUE(loaded.ok());
-    return DemoState(path, {}, *loaded.scene);
-}
 
 constexpr ViewSize view{800, 600};
 

@@ -11,7 +11,9 @@
 #      panel, and a red REC shows while recording;
 #   6. the panel and the view share the window: at 800x600 and 1280x720 the view (the cloth
 #      with it) is shown whole beside the panel, none of it under the panel;
-#   7. a refused edit (-5 typed into a stiffness) is said under that slider, whole.
+#   7. a refused edit (-5 typed into a stiffness) is said under that slider, whole;
+#   8. the panel's pause and step buttons pause and step the run, and its plots (energy,
+#      largest stretch, ms per frame) hold still while paused.
 # Usage: window_e2e_test.sh WEFT PNG_DIFF SOURCE_DIR PNG_COLOUR_COUNT
 set -uo pipefail
 weft=$(realpath "$1")
@@ -253,10 +255,11 @@ for size in 800x600:300 1280x720:384; do
 done
 
 # --- 7. a refused edit is said under its control ---------------------------------------------
-# Ctrl+click on the structural stiffness slider (the panel's first stiffness, at y = 318)
-# types a value; -5 is refused. The refusal must be said right under the slider (rows 326 to
-# 366), whole, inside the panel, and stay there (issue 18, item 3: it sat at the panel's
-# foot, cut off, out of sight) until the next edit, 700, which is taken.
+# Ctrl+click on the structural stiffness slider (the panel's first stiffness, at y = 380,
+# below the statistics and their three plots) types a value; -5 is refused. The refusal must
+# be said right under the slider (rows 388 to 428), whole, inside the panel, and stay there
+# (issue 18, item 3: it sat at the panel's foot, cut off, out of sight) until the next edit,
+# 700, which is taken.
 refusal_red="255 102 102"
 # type_into_slider X Y TEXT: Ctrl+click at (X, Y) and type TEXT, through the X server's own
 # input (the slider ignores clicks sent to the window alone). Each key and button is held
@@ -277,24 +280,52 @@ type_into_slider() {
   hold key Return
   sleep 0.5
 }
-refusal_pixels() { "$png_colour_count" "$window_shot" $refusal_red "$1" "$2" 326 366; }
+refusal_pixels() { "$png_colour_count" "$window_shot" $refusal_red "$1" "$2" 388 428; }
 start_weft refuse
-type_into_slider 60 318 -5
+type_into_slider 60 380 -5
 shoot_window refuse
 under_slider=$(refusal_pixels 0 $panel_right)
 beyond_panel=$(refusal_pixels $panel_right 800)
 sleep 3
 shoot_window refuse
 later=$(refusal_pixels 0 $panel_right)
-type_into_slider 60 318 700
+type_into_slider 60 380 700
 shoot_window refuse
 after_next_edit=$(refusal_pixels 0 800)
-quit_weft
 echo "refused -5: $under_slider refusal-red pixels under the slider, $beyond_panel beyond the panel; 3 s later $later; after the next edit $after_next_edit"
 check test "$under_slider" -gt 300
 check test "$beyond_panel" -eq 0
 check test "$later" -eq "$under_slider"
 check test "$after_next_edit" -eq 0
+
+# --- 8. pause and step buttons; the plots hold still while paused ----------------------------
+# In the same window. The three plots fill the panel's rows 112 to 238; a frame that steps
+# adds a sample to each (the ms-per-frame one is never flat), so they move while running,
+# hold still while paused (issue 18: the energy plot scrolled), and move once for one step.
+# The buttons sit at the panel's top: pause at (42, 50), step at (117, 50).
+click_at() {
+  xdotool mousemove --window "$window" "$1" "$2"
+  sleep 0.2
+  hold mouse 1
+  sleep 0.3
+}
+plots_changed() { "$png_diff" "$1" "$2" 8 280 8 112 238; }
+shoot_window refuse; running_a=$window_shot
+shoot_window refuse; running_b=$window_shot
+click_at 42 50   # pause (P)
+shoot_window refuse; paused_a=$window_shot
+sleep 0.5
+shoot_window refuse; paused_b=$window_shot
+click_at 117 50  # step (N)
+shoot_window refuse; stepped=$window_shot
+quit_weft
+running=$(plots_changed "$running_a" "$running_b")
+paused=$(plots_changed "$paused_a" "$paused_b")
+one_step=$(plots_changed "$paused_b" "$stepped")
+echo "plots: $running of their pixels changed over 0.5 s running, $paused over 1 s paused, $one_step for one step"
+check awk -v f="$running" 'BEGIN { exit !(f > 0.01) }'
+check awk -v f="$paused" 'BEGIN { exit !(f == 0) }'
+check awk -v f="$one_step" 'BEGIN { exit !(f > 0.001) }'
 
 echo "$passes passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -8,16 +8,26 @@
 #include <mutex>
 #include <sstream>
 
+#include "sim/chunked_reduce.h"
 #include "sim/grid_force_pass.h"
 
 namespace weft {
 
-double largest_stretch_ratio(const Cloth& cloth) {
+double largest_stretch_ratio(const Cloth& cloth, WorkerPool* pool) {
     double largest = -std::numeric_limits<double>::infinity();
     for (const SpringGroup& group : cloth.spring_groups)
-        for (const Spring& s : group.springs)
-            largest = std::max(
-                largest, glm::length(cloth.positions[s.j] - cloth.positions[s.i]) / s.rest_length);
+        largest = reduce_in_chunks(
+            pool, group.springs.size(), largest,
+            [&](std::size_t begin, std::size_t end) {
+                double part = -std::numeric_limits<double>::infinity();
+                for (std::size_t k = begin; k < end; ++k) {
+                    const Spring& s = group.springs[k];
+                    part = std::max(part, glm::length(cloth.positions[s.j] - cloth.positions[s.i]) /
+                                              s.rest_length);
+                }
+                return part;
+            },
+            [](double a, double b) { return std::max(a, b); });
     return std::isfinite(largest) ? largest : std::numeric_limits<double>::quiet_NaN();
 }
 namespace {

@@ -17,8 +17,9 @@ namespace weft {
 inline constexpr double runaway_stretch_ratio = 5.0;
 
 // The largest |x_j - x_i| / L over the live springs, or NaN when none is left: what the
-// stretch limits are judged on, for studies and tests to report.
-double largest_stretch_ratio(const Cloth& cloth);
+// stretch limits are judged on, for studies and tests to report. With a pool, split between
+// its threads (a maximum: the same whatever the split).
+double largest_stretch_ratio(const Cloth& cloth, WorkerPool* pool = nullptr);
 
 // Returns why the state is diverged, or nothing if it is sound: a non-finite position or
 // velocity (naming the particle), or — when `check_runaway_stretch` — a spring stretched

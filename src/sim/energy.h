@@ -1,6 +1,7 @@
 // Mechanical energy of the cloth, the quantity the conservation tests watch.
 #pragma once
 
+#include "parallel/worker_pool.h"
 #include "sim/cloth.h"
 #include "sim/force_pass.h"
 
@@ -13,7 +14,8 @@ struct Energy {
     double total() const { return kinetic + gravitational + elastic; }
 };
 
-// Pinned particles contribute nothing: they never move, so their terms are constant.
-Energy measure_energy(const Cloth& cloth, const ForceField& field);
+// Pinned particles contribute nothing: they never move, so their terms are constant. With a
+// pool, split between its threads; the same bits for any thread count (chunked_reduce.h).
+Energy measure_energy(const Cloth& cloth, const ForceField& field, WorkerPool* pool = nullptr);
 
 }  // namespace weft

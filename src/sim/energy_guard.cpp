@@ -33,9 +33,9 @@ double energy_scale(const Cloth& cloth, const ForceField& field) {
 }  // namespace
 
 std::optional<std::string> EnergyGuard::check(const Cloth& cloth, const ForceField& field,
-                                              double time, bool hand_pulls) {
+                                              double time, bool hand_pulls, WorkerPool* pool) {
     if (valid_ && time < next_check_) return std::nullopt;
-    const double energy = measure_energy(cloth, field).total();
+    const double energy = measure_energy(cloth, field, pool).total();
     const double power = wind_power(cloth, field);
     if (!std::isfinite(energy)) return std::nullopt;  // the divergence guard's to report
     if (!valid_) {

@@ -25,6 +25,7 @@
 #include <optional>
 #include <string>
 
+#include "parallel/worker_pool.h"
 #include "sim/cloth.h"
 #include "sim/force_pass.h"
 
@@ -38,7 +39,7 @@ class EnergyGuard {
     // After a step that ended at `time` in `field` (its gravity and wind), the hand pulling
     // or not.
     std::optional<std::string> check(const Cloth& cloth, const ForceField& field, double time,
-                                     bool hand_pulls);
+                                     bool hand_pulls, WorkerPool* pool = nullptr);
     // The state was replaced (reset, rollback, edits): start again from the next check.
     void forget() { valid_ = false; }
 

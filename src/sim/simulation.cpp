@@ -102,7 +102,7 @@ StepReport Simulation::step() {
         divergence_guard_.check(cloth_, check_runaway_stretch, pool_.get(),
                                 corrections == 0 ? workspace_.sweep_result : std::nullopt);
     if (!report.divergence)
-        report.divergence = energy_guard_.check(cloth_, field_, time_, drag_.active());
+        report.divergence = energy_guard_.check(cloth_, field_, time_, drag_.active(), pool_.get());
     return report;
 }
 

@@ -71,6 +71,8 @@ class Simulation {
     // same bit for bit whatever the count.
     void set_thread_count(int threads);
     int thread_count() const { return pool_->thread_count(); }
+    // The threads it steps with, for measures taken between steps (energy, stretch).
+    WorkerPool* pool() const { return pool_.get(); }
 
     void set_integrator(Integrator integrator);
     void set_dt(double dt);

@@ -104,6 +104,9 @@ double damping_rate_bound(const Cloth& cloth, double air_drag) {
 }
 
 double estimated_step_limit(const Cloth& cloth, double air_drag, Integrator integrator) {
+    // Neither needs the bounds (two passes over the springs: the panel asks every frame).
+    if (integrator == Integrator::implicit_euler) return std::numeric_limits<double>::infinity();
+    if (integrator == Integrator::explicit_euler) return 0.0;
     const double omega = angular_frequency_bound(cloth);
     const double damping = damping_rate_bound(cloth, air_drag);
     const double symplectic_limit =

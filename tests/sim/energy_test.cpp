@@ -4,9 +4,12 @@
 // sheet, the symplectic methods keep the energy error bounded over 10⁵ steps.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <string>
 
+#include "sim/divergence.h"
 #include "sim/energy.h"
 #include "sim/simulation.h"
 #include "test_scenes.h"
@@ -133,6 +136,53 @@ TEST(ExplicitEuler, EnergyOfTheSheetGrowsWithoutBound) {
     // Either it blew up outright, or the error at the end dwarfs the one at the start.
     if (drift.finite) {
         EXPECT_GT(drift.late, 100.0 * drift.early);
+    }
+}
+
+// The demo measures the sheet every frame on the simulation's threads, in chunks fixed by the
+// size alone: the energy and the largest stretch must be the same bits on any number of
+// threads, and equal the plain sums over particles and springs to rounding.
+TEST(SheetMeasures, AreTheSameBitsOnAnyThreadCount) {
+    Scene scene;
+    scene.cloth.rows = 96;  // 96² particles, 37 000 springs: several chunks each
+    scene.cloth.cols = 96;
+    scene.shear.enabled = true;
+    scene.bend.enabled = true;
+    scene.solver.integrator = Integrator::implicit_euler;
+    scene.solver.dt = 1.0 / 60.0;
+    Simulation simulation(scene);
+    for (int step = 0; step < 20; ++step) ASSERT_FALSE(simulation.step().diverged());
+    const Cloth& cloth = simulation.cloth();
+    const ForceField& field = simulation.force_field();
+
+    Energy plain;  // the sums as written in energy.h, in one loop each
+    double plain_largest = 0.0;
+    for (std::size_t p = 0; p < cloth.particle_count(); ++p) {
+        if (cloth.is_pinned(p)) continue;
+        plain.kinetic += 0.5 * cloth.masses[p] * glm::dot(cloth.velocities[p], cloth.velocities[p]);
+        plain.gravitational -= cloth.masses[p] * glm::dot(field.gravity, cloth.positions[p]);
+    }
+    for (const SpringGroup& group : cloth.spring_groups)
+        for (const Spring& spring : group.springs) {
+            const double length =
+                glm::length(cloth.positions[spring.j] - cloth.positions[spring.i]);
+            plain.elastic += 0.5 * group.stiffness * (length - spring.rest_length) *
+                             (length - spring.rest_length);
+            plain_largest = std::max(plain_largest, length / spring.rest_length);
+        }
+    ASSERT_GT(plain_largest, 1.0);  // the sheet has fallen: the springs are stretched
+
+    const Energy serial = measure_energy(cloth, field);
+    EXPECT_NEAR(serial.total(), plain.total(), 1e-12 * std::abs(plain.total()));
+    EXPECT_NEAR(serial.elastic, plain.elastic, 1e-12 * plain.elastic);
+    EXPECT_EQ(largest_stretch_ratio(cloth), plain_largest);
+    for (int threads : {1, 2, 3}) {
+        WorkerPool pool(threads);
+        const Energy split = measure_energy(cloth, field, &pool);
+        EXPECT_EQ(split.kinetic, serial.kinetic) << threads;
+        EXPECT_EQ(split.gravitational, serial.gravitational) << threads;
+        EXPECT_EQ(split.elastic, serial.elastic) << threads;
+        EXPECT_EQ(largest_stretch_ratio(cloth, &pool), plain_largest) << threads;
     }
 }
 

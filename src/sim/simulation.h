@@ -53,6 +53,9 @@ class Simulation {
         return {workspace_.implicit_last_iterations, workspace_.implicit_last_relative_residual};
     }
 
+    // Times the last implicit Euler step was halved (implicit_euler.cpp).
+    int last_step_splits() const { return workspace_.implicit_last_splits; }
+
     // When implicit Euler's solve stops (implicit_grid_solve.h).
     void set_implicit_solve_settings(const ImplicitSolveSettings& settings) {
         workspace_.implicit_settings = settings;

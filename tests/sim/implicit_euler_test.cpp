@@ -9,7 +9,9 @@
 #include <vector>
 
 #include "sim/cloth_builder.h"
+#include "sim/divergence.h"
 #include "sim/force_pass.h"
+#include "sim/scene_loader.h"
 #include "sim/simulation.h"
 #include "sim/stability_limit.h"
 #include "test_scenes.h"
@@ -25,6 +27,11 @@ TEST(ImplicitEuler, OscillationEnergyDecaysByExactlyOnePlusHOmegaSquaredPerStep)
     const testing::HangingSpring spring;
     const double dt = 1e-3;
     Simulation simulation(spring.scene(Integrator::implicit_euler, dt));
+    // The spring swings past 1.3 rest lengths: the step must not be split (implicit_euler.cpp)
+    // for the map to be the one step's.
+    ImplicitSolveSettings unsplit;
+    unsplit.split_stretch_ratio = 0.0;
+    simulation.set_implicit_solve_settings(unsplit);
     auto oscillation_energy = [&] {
         const double z = simulation.cloth().positions[1].y - spring.equilibrium();
         const double v = simulation.cloth().velocities[1].y;
@@ -166,6 +173,50 @@ TEST(ImplicitEuler, StaysBoundedFarPastTheExplicitLimitOnAStiffSheet) {
                                                 s.rest_length);
         EXPECT_LT(largest, 1.1) << multiple;  // a stiff sheet hangs nearly unstretched
     }
+}
+
+// cloth_128.toml's material at 64² (the same sheet, a quarter of the particles), released flat
+// at dt = 1/15 s: in its first linearised step the sheet falls g h² = 4.4 cm, 2.4 spacings,
+// everywhere but at the pins, for the springs at rest have no stiffness across themselves.
+struct FlatReleaseAtALargeStep {
+    Simulation simulation;
+    FlatReleaseAtALargeStep(double split_stretch_ratio)
+        : simulation(*load_scene_file(WEFT_SOURCE_DIR "/assets/scenes/cloth_128.toml",
+                                      {"cloth.rows=64", "cloth.cols=64",
+                                       "cloth.spacing=0.018254",         // m: 1.15 m / 63
+                                       "cloth.particle_mass=0.0000666",  // kg: 0.2 kg/m² × spacing²
+                                       "solver.dt=0.0666666666666667"})
+                          .scene) {
+        ImplicitSolveSettings settings;
+        settings.split_stretch_ratio = split_stretch_ratio;
+        simulation.set_implicit_solve_settings(settings);
+    }
+};
+
+TEST(ImplicitEulerSplit, AStepThatWouldOverstretchASpringIsTakenInHalves) {
+    // Taken whole, the first step leaves the springs beside the pins 2.5 rest lengths long
+    // and the sheet runs away: the linearisation, not the solve, fails it.
+    FlatReleaseAtALargeStep whole(0.0);
+    bool diverged = false;
+    double whole_largest = 0.0;
+    for (int step = 0; step < 23 && !diverged; ++step) {
+        diverged = whole.simulation.step().diverged();
+        whole_largest = std::max(whole_largest, largest_stretch_ratio(whole.simulation.cloth()));
+    }
+    EXPECT_TRUE(diverged || whole_largest > 2.0) << whole_largest;
+
+    // Split, every step ends with no spring past 1.3 rest lengths (none started past it, and
+    // halving three times over is enough here), so the sheet falls, swings and settles.
+    FlatReleaseAtALargeStep split(1.3);
+    int splits = 0;
+    for (int step = 0; step < 23; ++step) {  // 1.5 s
+        ASSERT_FALSE(split.simulation.step().diverged()) << step;
+        splits += split.simulation.last_step_splits();
+        EXPECT_LE(largest_stretch_ratio(split.simulation.cloth()), 1.3) << step;
+    }
+    EXPECT_GT(splits, 0);
+    // Only the steps that needed it were split: far fewer than the steps taken times eight.
+    EXPECT_LT(splits, 23);
 }
 
 }  // namespace

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
+#include "sim/divergence.h"
 #include "sim/integrators/integrator.h"
 
 namespace weft {
@@ -54,8 +55,71 @@ void multiply_implicit_system(const Cloth& cloth, const IntegratorWorkspace& wor
     for (std::uint32_t p : cloth.pinned) product[p] = Vec3(0.0);
 }
 
+namespace {
+
+// One linearised step of dt, by the structured solve where the cloth is a grid, else by the
+// general one below.
+void take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
+                          IntegratorWorkspace& work);
+
+// Whether some live spring is longer than `ratio` rest lengths: the stencil's vectorised
+// test first, which almost always settles it, then the exact one.
+bool some_spring_longer_than(const Cloth& cloth, double ratio, WorkerPool* pool) {
+    const std::optional<bool> maybe = grid_springs_maybe_longer_than(cloth, ratio, pool);
+    if (maybe && !*maybe) return false;
+    return largest_stretch_ratio(cloth, pool) > ratio;
+}
+
+// The step of dt, or, when the linearisation fails it, two of dt / 2 (each of which may
+// split again, down to dt / 2^max_split_depth). The linearised step sees a spring's stiffness
+// only as it is at the start: a spring at its rest length has none across itself, so a
+// flat sheet released at dt = 1/30 s falls 2.4 spacings in its first step everywhere but at
+// the pins, and the springs beside them come out 2.5 rest lengths long (256², cloth_256
+// material); the next steps run away. Such a step is the one that takes some spring from
+// below split_stretch_ratio rest lengths to beyond it; halving the step, the sheet's own
+// stiffness holds it. A sheet already stretched beyond that ratio at the start of a step
+// (a hand pulling it taut) is not split again and again: nothing of the linearisation is
+// wrong with it.
+void step_or_split(Cloth& cloth, const ForceField& field, double dt, IntegratorWorkspace& work,
+                   int depth) {
+    const ImplicitSolveSettings& settings = work.implicit_settings;
+    const bool may_split = depth < settings.max_split_depth && settings.split_stretch_ratio > 1.0;
+    if (may_split) {
+        work.implicit_step_start_positions.assign(cloth.positions.begin(), cloth.positions.end());
+        work.implicit_step_start_velocities.assign(cloth.velocities.begin(),
+                                                   cloth.velocities.end());
+    }
+    const int iterations_before = work.implicit_last_iterations;
+    take_linearised_step(cloth, field, dt, work);
+    work.implicit_last_iterations += iterations_before;
+    if (!may_split || !some_spring_longer_than(cloth, settings.split_stretch_ratio, work.pool))
+        return;
+    // Back to the start, to see whether it was already beyond the ratio there.
+    cloth.positions.swap(work.implicit_step_start_positions);
+    cloth.velocities.swap(work.implicit_step_start_velocities);
+    if (some_spring_longer_than(cloth, settings.split_stretch_ratio, work.pool)) {
+        cloth.positions.swap(work.implicit_step_start_positions);  // keep the step as taken
+        cloth.velocities.swap(work.implicit_step_start_velocities);
+        return;
+    }
+    ++work.implicit_last_splits;
+    step_or_split(cloth, field, 0.5 * dt, work, depth + 1);
+    step_or_split(cloth, field, 0.5 * dt, work, depth + 1);
+}
+
+}  // namespace
+
 void step_implicit_euler(Cloth& cloth, const ForceField& field, double dt,
                          IntegratorWorkspace& work) {
+    work.implicit_last_iterations = 0;
+    work.implicit_last_splits = 0;
+    step_or_split(cloth, field, dt, work, 0);
+}
+
+namespace {
+
+void take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
+                          IntegratorWorkspace& work) {
     if (step_implicit_euler_grid(cloth, field, dt, work.implicit_settings, work.implicit_grid,
                                  work.pool)) {
         ++work.force_evaluations;
@@ -139,5 +203,7 @@ void step_implicit_euler(Cloth& cloth, const ForceField& field, double dt,
         cloth.positions[p] += dt * cloth.velocities[p];
     }
 }
+
+}  // namespace
 
 }  // namespace weft

@@ -52,6 +52,10 @@ struct ImplicitSolveSettings {
     bool warm_start = true;  // start from v0 + the previous step's Δv instead of v0
     bool multilevel = true;  // add the coarse levels to the block-Jacobi preconditioner
     double coarse_weight = 1.0;
+    // A step that takes some spring from below this many rest lengths to beyond it is taken
+    // again as two halves, at most max_split_depth times over (implicit_euler.cpp; 0: never).
+    double split_stretch_ratio = 1.3;
+    int max_split_depth = 3;
 
     double tolerance(double dt) const {
         return fixed_tolerance > 0.0 ? fixed_tolerance

@@ -56,7 +56,10 @@ struct IntegratorWorkspace {
     // when both solves stop.
     ImplicitGridSolver implicit_grid;
     ImplicitSolveSettings implicit_settings;
-    int implicit_last_iterations = 0;
+    int implicit_last_iterations = 0;  // over all the pieces of a split step
+    int implicit_last_splits = 0;      // times the last step was halved (implicit_euler.cpp)
+    // The start of the step being taken, for a split to go back to (sized on first use).
+    std::vector<Vec3> implicit_step_start_positions, implicit_step_start_velocities;
     double implicit_last_relative_residual = 0.0;
     bool history_valid = false;
     std::uint64_t force_evaluations = 0;  // total calls of the force pass, for cost studies

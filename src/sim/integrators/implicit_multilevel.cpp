@@ -230,10 +230,9 @@ void apply_level(std::vector<ImplicitCoarseLevel>& levels, const BandedCholesky&
     add_coarser_corrections(levels, exact, index, weight);
 }
 
-void add_coarser_corrections(std::vector<ImplicitCoarseLevel>& levels, const BandedCholesky& exact,
-                             std::size_t index, double weight) {
-    if (index + 1 == levels.size()) return;
-    ImplicitCoarseLevel& level = levels[index];
+// The residual of level index + 1, the sums of level index's over each aggregate.
+void restrict_to_coarser(std::vector<ImplicitCoarseLevel>& levels, std::size_t index) {
+    const ImplicitCoarseLevel& level = levels[index];
     ImplicitCoarseLevel& coarser = levels[index + 1];
     std::fill(coarser.residual.begin(), coarser.residual.end(), 0.0);
     for (int r = 0; r < level.rows; ++r)
@@ -242,6 +241,14 @@ void add_coarser_corrections(std::vector<ImplicitCoarseLevel>& levels, const Ban
             const std::size_t m = static_cast<std::size_t>(aggregate(r, c, coarser.cols));
             for (int a = 0; a < 3; ++a) coarser.residual[3 * m + a] += level.residual[3 * n + a];
         }
+}
+
+void add_coarser_corrections(std::vector<ImplicitCoarseLevel>& levels, const BandedCholesky& exact,
+                             std::size_t index, double weight) {
+    if (index + 1 == levels.size()) return;
+    ImplicitCoarseLevel& level = levels[index];
+    const ImplicitCoarseLevel& coarser = levels[index + 1];
+    restrict_to_coarser(levels, index);
     apply_level(levels, exact, index + 1, weight);
     for (int r = 0; r < level.rows; ++r)
         for (int c = 0; c < level.cols; ++c) {
@@ -301,21 +308,35 @@ double ImplicitMultilevel::apply(const implicit_kernel::Job& job, bool restricte
                     multiply_symmetric_block(&first.inverse[6 * n], sum, &first.correction[3 * n]);
                 }
         });
-    // The coarser levels are small (a quarter of the first and less): one thread.
+    // The second level and the coarser ones are small (a quarter of the first and less): one
+    // thread. The second's correction (its own and the coarser levels') is prolonged into
+    // the first's in pass 2, split between the threads.
     if (levels.size() == 1) {  // the first level is the coarsest: exact, not D⁻¹
         first.correction = first.residual;
         exact.solve(first.correction.data());
+    } else {
+        restrict_to_coarser(levels, 0);
+        apply_level(levels, exact, 1, weight);
     }
-    add_coarser_corrections(levels, exact, 0, weight);
-    // Pass 2, by rows of the first level: r · P x_c = (Pᵀ r) · x_c per row of nodes (summed
-    // in row order below), the correction spread along the row's fine columns in single
-    // precision, then z += P x_c on the free particles of the row's two fine rows.
+    // Pass 2, by rows of the first level: its correction plus the second's, r · P x_c =
+    // (Pᵀ r) · x_c per row of nodes (summed in row order below), the correction spread along
+    // the row's fine columns in single precision, then z += P x_c on the free particles of
+    // the row's two fine rows.
     const auto cols = static_cast<std::size_t>(job.cols);
     spread.resize(3 * static_cast<std::size_t>(first.rows) * cols);
     added_by_row.resize(static_cast<std::size_t>(first.rows));
     over_rows(first.rows, job.rows * job.cols, pool, [&](int begin, int end) {
         for (int row = begin; row < end; ++row) {
             const std::size_t nodes = static_cast<std::size_t>(row) * first.cols;
+            if (levels.size() > 1) {
+                const ImplicitCoarseLevel& second = levels[1];
+                for (int col = 0; col < first.cols; ++col) {
+                    const std::size_t n = nodes + static_cast<std::size_t>(col);
+                    const auto m = static_cast<std::size_t>(aggregate(row, col, second.cols));
+                    for (int a = 0; a < 3; ++a)
+                        first.correction[3 * n + a] += weight * second.correction[3 * m + a];
+                }
+            }
             double added_here = 0.0;
             for (std::size_t n = 3 * nodes; n < 3 * (nodes + first.cols); ++n)
                 added_here += weight * first.residual[n] * first.correction[n];

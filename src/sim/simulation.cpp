@@ -49,6 +49,7 @@ void Simulation::reset() {
     self_collision_.reset();
     divergence_guard_.forget();
     energy_guard_.forget();
+    tearing_guard_.forget();
     if (scene_.self_collision_thickness) self_collision_.emplace(*scene_.self_collision_thickness);
     time_ = 0.0;
     steps_taken_ = 0;
@@ -91,8 +92,10 @@ StepReport Simulation::step() {
     corrections += report.contacts;
     time_ += dt_;
     ++steps_taken_;
-    if (scene_.tear_max_stretch)
-        report.springs_torn = tear_overstretched_springs(cloth_, *scene_.tear_max_stretch);
+    if (scene_.tear_max_stretch) {
+        torn_.clear();
+        report.springs_torn = tear_overstretched_springs(cloth_, *scene_.tear_max_stretch, &torn_);
+    }
     // Forces changed with the topology; the Verlets' carried acceleration is stale.
     if (report.springs_torn || corrections) workspace_.history_valid = false;
     // With tearing on, a runaway spring breaks instead of stretching without bound, so only
@@ -101,6 +104,9 @@ StepReport Simulation::step() {
     report.divergence =
         divergence_guard_.check(cloth_, check_runaway_stretch, pool_.get(),
                                 corrections == 0 ? workspace_.sweep_result : std::nullopt);
+    // With tearing on, an unstable step shreds the cloth rather than diverge (runaway_tearing.h).
+    if (!report.divergence && scene_.tear_max_stretch)
+        report.divergence = tearing_guard_.check(cloth_, torn_, time_, drag_);
     if (!report.divergence)
         report.divergence = energy_guard_.check(cloth_, field_, time_, drag_.active(), pool_.get());
     return report;
@@ -148,7 +154,8 @@ void Simulation::set_spring_material(SpringFamily family, double stiffness, doub
 }
 
 void Simulation::set_family_enabled(SpringFamily family, bool enabled) {
-    energy_guard_.forget();  // the energy is measured against other terms now
+    energy_guard_.forget();   // the energy is measured against other terms now
+    tearing_guard_.forget();  // and the sheet's share against another count of springs
     SpringFamilySpec& spec = family_spec(scene_, family);
     if (family == SpringFamily::structural || spec.enabled == enabled) return;
     spec.enabled = enabled;
@@ -192,6 +199,10 @@ void Simulation::set_particle_mass(double mass) {
 }
 
 void Simulation::set_tear_limit(std::optional<double> max_stretch) {
+    // A lower limit breaks every spring already past it on the next step, all over the
+    // sheet: the user's choice, not the motion running away.
+    if (max_stretch && (!scene_.tear_max_stretch || *max_stretch < *scene_.tear_max_stretch))
+        tearing_guard_.ignore_next_step();
     scene_.tear_max_stretch = max_stretch;
 }
 
@@ -286,6 +297,7 @@ Cloth& Simulation::edit_cloth() {
     workspace_.history_valid = false;
     divergence_guard_.forget();  // the caller may change more than positions
     energy_guard_.forget();
+    tearing_guard_.forget();
     return cloth_;
 }
 

@@ -14,6 +14,7 @@
 #include "sim/energy_guard.h"
 #include "sim/force_pass.h"
 #include "sim/integrators/integrator.h"
+#include "sim/runaway_tearing.h"
 #include "sim/scene.h"
 #include "sim/self_collision.h"
 #include "sim/topology_edits.h"
@@ -38,7 +39,9 @@ class Simulation {
 
     // Advances by one step of dt, then applies what the scene asks for, in this order:
     // strain limiting, impulse contacts with colliders, self-collision, tearing; then the
-    // divergence guard looks at the new state. (Repulsion contacts are forces, inside the step.)
+    // guards look at the new state: the divergence guard, the runaway-tearing guard, the
+    // energy guard, and the first to object says why in the report. (Repulsion contacts are
+    // forces, inside the step.)
     StepReport step();
 
     double time() const { return time_; }  // s, simulated
@@ -146,6 +149,8 @@ class Simulation {
     std::vector<Vec3> step_start_;  // m: positions before the step, for self-collision
     DivergenceGuard divergence_guard_;
     EnergyGuard energy_guard_;
+    RunawayTearingGuard tearing_guard_;
+    std::vector<Spring> torn_;  // the springs the last step tore (kept: no allocation a step)
     double time_ = 0.0;
     std::uint64_t steps_taken_ = 0;
 };

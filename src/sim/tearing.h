@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "sim/cloth.h"
 
@@ -11,7 +12,9 @@ namespace weft {
 // judged against the same state and removed together, so the result does not depend on
 // the order in which springs are visited. Order of the survivors is kept (locality, and
 // results that do not depend on which springs broke first). Triangles that lost an edge go
-// with them. Returns the number removed.
-std::size_t tear_overstretched_springs(Cloth& cloth, double max_stretch);
+// with them. Returns the number removed; when `torn` is given, the removed springs are
+// appended to it (for the runaway-tearing guard, which asks where they were).
+std::size_t tear_overstretched_springs(Cloth& cloth, double max_stretch,
+                                       std::vector<Spring>* torn = nullptr);
 
 }  // namespace weft

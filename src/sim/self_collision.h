@@ -79,13 +79,15 @@ class SelfCollision {
                            double overlap);
     double margin() const { return thickness_; }            // m: how far the list looks past
     double reach() const { return thickness_ + margin(); }  // m: the list's radius
-    // True when some particle has moved more than half the margin since the list was built
-    // (or the list does not fit the cloth).
-    bool moved_beyond_margin(const Cloth& cloth, WorkerPool* pool) const;
+    // True when two particles may have come closer by more than the margin since the list
+    // was built (or the list does not fit the cloth, or a position is not finite).
+    bool moved_beyond_margin(const Cloth& cloth) const;
     void rebuild_candidates(const Cloth& cloth, WorkerPool* pool);
     void rebuild_hash(const Cloth& cloth, WorkerPool* pool);
     static constexpr std::size_t search_chunks = 16;  // fixed: the split never shows
-    void rebuild_joined_pairs(const Cloth& cloth);
+    void rebuild_joined_partners(const Cloth& cloth);
+    // Rebuilds the partners when springs were torn or cut or the cloth changed size; true if so.
+    bool refresh_joined_partners(const Cloth& cloth);
     bool joined(std::uint32_t a, std::uint32_t b) const;
     // Integer cell coordinate, clamped so that far-flung (but finite) particles cannot
     // overflow the conversion; cells that far out only ever hold the particles that flew there.
@@ -99,7 +101,11 @@ class SelfCollision {
     std::vector<std::uint32_t> slots_;             // each particle's hash table slot
     std::vector<std::uint32_t> cell_start_;        // prefix sums over the hash table, size + 1
     std::vector<std::uint32_t> cell_entries_;      // particle indices sorted by cell
-    std::vector<std::uint64_t> joined_pairs_;      // sorted edge keys of the live springs
+    // The live springs' ends, by particle: the partners of p are
+    // joined_partners_[joined_start_[p] .. joined_start_[p + 1]).
+    std::vector<std::uint32_t> joined_start_;
+    std::vector<std::uint32_t> joined_partners_;
+    std::vector<std::uint32_t> joined_fill_;  // where the next partner of each goes (building)
     std::size_t joined_spring_count_ = static_cast<std::size_t>(-1);
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs_;
     // The Verlet list: unjoined pairs closer than reach() at built_at_, ascending.

@@ -407,6 +407,7 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
     long long frames = 0;
     long long frames_behind = 0;  // frames the step budget cut short (real time not kept)
     double total_sim_seconds = 0.0, total_raster_seconds = 0.0;
+    long long total_steps = 0;  // steps of the main run, to tell a step's cost in the window
     double last = now_seconds();
     double seconds_per_step = 0.0;
     bool running = true;
@@ -464,6 +465,7 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
         ++frames;
         if (plan.behind) ++frames_behind;
         total_sim_seconds += stats.sim_seconds;
+        total_steps += steps;
         total_raster_seconds += stats.raster_seconds;
         if (w.save_window_next_frame) {
             save_window_screenshot(state, w);
@@ -481,10 +483,11 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
     if (frames > 0)
         std::printf(
             "%lld frames in %.1f s: %.1f fps, %.2f ms stepping and %.2f ms drawing per frame; "
-            "%lld behind real time\n",
+            "%lld behind real time; %lld steps, %.1f us each\n",
             frames, seconds, static_cast<double>(frames) / seconds,
             1e3 * total_sim_seconds / static_cast<double>(frames),
-            1e3 * total_raster_seconds / static_cast<double>(frames), frames_behind);
+            1e3 * total_raster_seconds / static_cast<double>(frames), frames_behind, total_steps,
+            total_steps > 0 ? 1e6 * total_sim_seconds / static_cast<double>(total_steps) : 0.0);
     if (command_line.record_path && state.recording) {
         std::string error;
         if (write_file_atomically(*command_line.record_path,

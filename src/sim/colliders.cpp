@@ -73,30 +73,59 @@ void accumulate_repulsion_forces(std::span<const Collider> colliders, const Clot
 
 namespace {
 
+// Bit k of the result: whether particle first + k may be inside the collider, for the
+// particles [first, last) (at most 32). Exactly signed_distance's test for a plane, in its
+// operations; for a sphere a superset of it, off by a margin far above rounding (clearly
+// outside: no square root needed). No branch, so the compiler vectorises it.
+unsigned maybe_inside(const Collider& collider, const double* x, std::size_t first,
+                      std::size_t last) {
+    unsigned maybe = 0;
+    if (collider.type == ColliderType::plane) {
+        const Vec3 a = collider.point, n = collider.normal;
+        for (std::size_t p = first; p < last; ++p) {
+            const double d = (x[3 * p] - a.x) * n.x + (x[3 * p + 1] - a.y) * n.y +
+                             (x[3 * p + 2] - a.z) * n.z;  // m
+            maybe |= (d < 0.0 ? 1u : 0u) << (p - first);
+        }
+        return maybe;
+    }
+    const Vec3 c = collider.center;
+    const double clearly_outside_squared = collider.radius * collider.radius * (1.0 + 1e-9);
+    for (std::size_t p = first; p < last; ++p) {
+        const double dx = x[3 * p] - c.x, dy = x[3 * p + 1] - c.y, dz = x[3 * p + 2] - c.z;
+        maybe |= (dx * dx + dy * dy + dz * dz > clearly_outside_squared ? 0u : 1u) << (p - first);
+    }
+    return maybe;
+}
+
 // Moves every free particle found inside an impulse collider onto its surface, then hands it
 // to `respond(collider, velocity, outward_normal)`; returns how many there were.
 template <class Respond>
 std::size_t move_onto_impulse_colliders(std::span<const Collider> colliders, Cloth& cloth,
                                         Respond respond) {
     std::size_t moved = 0;
+    Vec3* positions = cloth.positions.data();
+    Vec3* velocities = cloth.velocities.data();
+    const std::size_t count = cloth.particle_count();
     for (const Collider& collider : colliders) {
         if (collider.response != ContactResponse::impulse) continue;
-        // A particle clearly outside a sphere (by a margin far above rounding) needs no
-        // square root: most of the sheet, most of the time. Those nearer are measured
-        // exactly as before, so every result is the same to the bit.
-        const double clearly_outside_squared = collider.radius * collider.radius * (1.0 + 1e-9);
-        for (std::size_t p = 0; p < cloth.particle_count(); ++p) {
-            if (cloth.is_pinned(p)) continue;
-            if (collider.type == ColliderType::sphere) {
-                const Vec3 from_center = cloth.positions[p] - collider.center;
-                if (glm::dot(from_center, from_center) > clearly_outside_squared) continue;
+        // Most of the sheet, most of the time, is clear of the solid: the test runs over
+        // blocks of particles without a branch (it vectorises), and only a block with a
+        // particle that may be inside is looked at one particle at a time.
+        constexpr std::size_t block = 8;
+        for (std::size_t first = 0; first < count; first += block) {
+            const std::size_t last = std::min(first + block, count);
+            const unsigned maybe = maybe_inside(collider, &positions->x, first, last);
+            if (maybe == 0) continue;
+            for (std::size_t p = first; p < last; ++p) {
+                if (!(maybe >> (p - first) & 1u) || cloth.is_pinned(p)) continue;
+                Vec3 n;
+                const double distance = signed_distance(collider, positions[p], n);
+                if (distance >= 0.0) continue;
+                ++moved;
+                positions[p] -= distance * n;  // onto the surface
+                respond(collider, velocities[p], n);
             }
-            Vec3 n;
-            const double distance = signed_distance(collider, cloth.positions[p], n);
-            if (distance >= 0.0) continue;
-            ++moved;
-            cloth.positions[p] -= distance * n;  // onto the surface
-            respond(collider, cloth.velocities[p], n);
         }
     }
     return moved;

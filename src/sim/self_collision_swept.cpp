@@ -43,7 +43,7 @@ std::size_t SelfCollision::resolve_swept(Cloth& cloth, std::span<const Collider>
 
 void SelfCollision::find_swept_candidates(const Cloth& cloth, std::span<const Vec3> step_start,
                                           double largest_move) {
-    if (cloth.spring_count() != joined_spring_count_) rebuild_joined_pairs(cloth);
+    refresh_joined_partners(cloth);
     const std::size_t count = cloth.particle_count();
     // Grown by the thickness each: two paths within the thickness overlap with half of it
     // to spare, room for the passes' pushes.

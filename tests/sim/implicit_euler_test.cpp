@@ -205,8 +205,8 @@ TEST(ImplicitEulerSplit, AStepThatWouldOverstretchASpringIsTakenInHalves) {
     }
     EXPECT_TRUE(diverged || whole_largest > 2.0) << whole_largest;
 
-    // Split, every step ends with no spring past 1.3 rest lengths (none started past it, and
-    // halving three times over is enough here), so the sheet falls, swings and settles.
+    // Split where the linearisation failed, no step ends with a spring past 1.3 rest lengths
+    // (halving three times over is enough here), so the sheet falls, swings and settles.
     FlatReleaseAtALargeStep split(1.3);
     int splits = 0;
     for (int step = 0; step < 23; ++step) {  // 1.5 s

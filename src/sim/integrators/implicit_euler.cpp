@@ -17,9 +17,11 @@
 // filtered out of every vector (Baraff & Witkin's constraint filter for fully constrained
 // particles), warm-started from the previous step's Δv, until the residual is below
 // implicit_cg_tolerance × |b| or implicit_cg_max_iterations is reached.
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 
+#include "sim/chunked_reduce.h"
 #include "sim/divergence.h"
 #include "sim/integrators/integrator.h"
 
@@ -70,39 +72,75 @@ bool some_spring_longer_than(const Cloth& cloth, double ratio, WorkerPool* pool)
     return largest_stretch_ratio(cloth, pool) > ratio;
 }
 
-// The step of dt, or, when the linearisation fails it, two of dt / 2 (each of which may
+// The largest error of the step's linearisation over the springs, in rest lengths: for each
+// spring, how far its force at the end of the step, k (|d1| - L) d1 / |d1|, is from what the
+// step assumed, f(d0) + K(d0) (d1 - d0) (K as in the header, the compressed spring's negative
+// transverse term left out as in the step), divided by k L. `start`: the positions x0.
+double largest_linearisation_error(const Cloth& cloth, std::span<const Vec3> start,
+                                   WorkerPool* pool) {
+    double largest = 0.0;
+    for (const SpringGroup& group : cloth.spring_groups)
+        largest = reduce_in_chunks(
+            pool, group.springs.size(), largest,
+            [&](std::size_t begin, std::size_t end) {
+                double part = 0.0;
+                for (std::size_t k = begin; k < end; ++k) {
+                    const Spring& spring = group.springs[k];
+                    const Vec3 before = start[spring.j] - start[spring.i];
+                    const Vec3 after = cloth.positions[spring.j] - cloth.positions[spring.i];
+                    const double l0 = glm::length(before), l1 = glm::length(after);
+                    if (!(l0 > 0.0) || !(l1 > 0.0) || !(spring.rest_length > 0.0)) continue;
+                    const Vec3 u = before / l0, change = after - before;
+                    const double along = glm::dot(u, change);
+                    const double transverse = std::max(0.0, 1.0 - spring.rest_length / l0);
+                    const Vec3 assumed = (l0 - spring.rest_length) * u + along * u +
+                                         transverse * (change - along * u);
+                    const Vec3 actual = (l1 - spring.rest_length) / l1 * after;
+                    part = std::max(part, glm::length(actual - assumed) / spring.rest_length);
+                }
+                return part;
+            },
+            [](double a, double b) { return std::max(a, b); });
+    return largest;
+}
+
+// The step of dt, or, when its linearisation fails it, two of dt / 2 (each of which may
 // split again, down to dt / 2^max_split_depth). The linearised step sees a spring's stiffness
 // only as it is at the start: a spring at its rest length has none across itself, so a
 // flat sheet released at dt = 1/30 s falls 2.4 spacings in its first step everywhere but at
 // the pins, and the springs beside them come out 2.5 rest lengths long (256², cloth_256
-// material); the next steps run away. Such a step is the one that takes some spring from
-// below split_stretch_ratio rest lengths to beyond it; halving the step, the sheet's own
-// stiffness holds it. A sheet already stretched beyond that ratio at the start of a step
-// (a hand pulling it taut) is not split again and again: nothing of the linearisation is
-// wrong with it.
+// material) where the step assumed no force at all; the next steps run away. So a step after
+// which some spring is longer than split_stretch_ratio rest lengths (a pass that almost
+// never finds one, vectorised) and some spring's force is further than split_force_error
+// × k L from what the step assumed is taken again in halves: the error of the linearisation
+// falls as the square of the step's motion. A hand pulling a sheet taut stretches its
+// springs along themselves, where the linearisation is close to exact, and is not split.
 void step_or_split(Cloth& cloth, const ForceField& field, double dt, IntegratorWorkspace& work,
                    int depth) {
     const ImplicitSolveSettings& settings = work.implicit_settings;
     const bool may_split = depth < settings.max_split_depth && settings.split_stretch_ratio > 1.0;
     if (may_split) {
-        work.implicit_step_start_positions.assign(cloth.positions.begin(), cloth.positions.end());
-        work.implicit_step_start_velocities.assign(cloth.velocities.begin(),
-                                                   cloth.velocities.end());
+        work.implicit_step_start_positions.resize(cloth.particle_count());
+        work.implicit_step_start_velocities.resize(cloth.particle_count());
+        for_particle_ranges(work, cloth.particle_count(), [&](std::size_t begin, std::size_t end) {
+            std::copy(cloth.positions.begin() + begin, cloth.positions.begin() + end,
+                      work.implicit_step_start_positions.begin() + begin);
+            std::copy(cloth.velocities.begin() + begin, cloth.velocities.begin() + end,
+                      work.implicit_step_start_velocities.begin() + begin);
+        });
     }
     const int iterations_before = work.implicit_last_iterations;
     take_linearised_step(cloth, field, dt, work);
     work.implicit_last_iterations += iterations_before;
-    if (!may_split || !some_spring_longer_than(cloth, settings.split_stretch_ratio, work.pool))
+    if (!may_split || !some_spring_longer_than(cloth, settings.split_stretch_ratio, work.pool) ||
+        !(largest_linearisation_error(cloth, work.implicit_step_start_positions, work.pool) >
+          settings.split_force_error))
         return;
-    // Back to the start, to see whether it was already beyond the ratio there.
-    cloth.positions.swap(work.implicit_step_start_positions);
-    cloth.velocities.swap(work.implicit_step_start_velocities);
-    if (some_spring_longer_than(cloth, settings.split_stretch_ratio, work.pool)) {
-        cloth.positions.swap(work.implicit_step_start_positions);  // keep the step as taken
-        cloth.velocities.swap(work.implicit_step_start_velocities);
-        return;
-    }
     ++work.implicit_last_splits;
+    std::copy(work.implicit_step_start_positions.begin(), work.implicit_step_start_positions.end(),
+              cloth.positions.begin());
+    std::copy(work.implicit_step_start_velocities.begin(),
+              work.implicit_step_start_velocities.end(), cloth.velocities.begin());
     step_or_split(cloth, field, 0.5 * dt, work, depth + 1);
     step_or_split(cloth, field, 0.5 * dt, work, depth + 1);
 }

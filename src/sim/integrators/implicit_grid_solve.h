@@ -52,9 +52,12 @@ struct ImplicitSolveSettings {
     bool warm_start = true;  // start from v0 + the previous step's Δv instead of v0
     bool multilevel = true;  // add the coarse levels to the block-Jacobi preconditioner
     double coarse_weight = 1.0;
-    // A step that takes some spring from below this many rest lengths to beyond it is taken
-    // again as two halves, at most max_split_depth times over (implicit_euler.cpp; 0: never).
+    // A step that leaves some spring beyond split_stretch_ratio rest lengths and some
+    // spring's force further than split_force_error × k L from what the linearised step
+    // assumed is taken again as two halves, at most max_split_depth times over
+    // (implicit_euler.cpp; a ratio of 0: never).
     double split_stretch_ratio = 1.3;
+    double split_force_error = 0.1;
     int max_split_depth = 3;
 
     double tolerance(double dt) const {

@@ -5,6 +5,7 @@
 // exactly the checks a value from the file does; TomlReader reports it as "--set KEY".
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -166,6 +167,15 @@ void read_springs(TomlReader& reader, const toml::table& root, Scene& scene) {
 
 // An optional single-key table such as [tearing]: absent means the feature is off; present
 // means on, with the key's value or its default.
+std::string thickness_refusal(double thickness, double max_spacings, double spacing) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "a thickness of %.4g m is more than %g particle spacings (cloth.spacing = %.4g "
+                  "m): every particle would be within it of dozens of others; at most %.4g m",
+                  thickness, max_spacings, spacing, max_spacings * spacing);
+    return text;
+}
+
 void read_optional_feature(TomlReader& reader, const toml::table& root, std::string_view table_name,
                            std::string_view key, double default_value, double minimum,
                            std::optional<double>& out) {
@@ -345,6 +355,19 @@ SceneLoadResult load_scene_text(std::string_view toml_text, std::string_view sou
                           scene.strain_limit_max_stretch);
     read_optional_feature(reader, root, "self_collision", "thickness", 0.01, 0.0,
                           scene.self_collision_thickness);
+    // A thickness of many spacings makes every particle the neighbour of every other: the
+    // pass turns into all pairs (a fuzzed 64² sheet with a 1 m thickness took minutes), and
+    // the flat sheet pushes itself apart. The shipped scenes use 0.5 to 0.75 spacings.
+    constexpr double max_thickness_spacings = 2.0;
+    if (!reader.failed() && scene.self_collision_thickness &&
+        *scene.self_collision_thickness > max_thickness_spacings * scene.cloth.spacing) {
+        const toml::table& table = *root["self_collision"].as_table();
+        const toml::node* node = table.get("thickness");
+        reader.fail(node ? *node : static_cast<const toml::node&>(table),
+                    "self_collision.thickness",
+                    thickness_refusal(*scene.self_collision_thickness, max_thickness_spacings,
+                                      scene.cloth.spacing));
+    }
     read_forces_and_solver(reader, root, scene);
     read_colliders(reader, root, scene);
     read_camera(reader, root, scene);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "sim/implicit_grid_kernel.h"
+#include "sim/integrators/implicit_coarse_rows.h"
 
 #define WEFT_KERNEL_JOIN(name, suffix) name##_##suffix
 #define WEFT_KERNEL_NAME(name, suffix) WEFT_KERNEL_JOIN(name, suffix)
@@ -15,6 +16,7 @@
 namespace weft::implicit_kernel {
 namespace {
 #include "sim/implicit_grid_kernel.inl"
+#include "sim/integrators/implicit_coarse_rows_kernel.inl"
 }  // namespace
 
 void WEFT_KERNEL_NAME(setup_rows, WEFT_KERNEL_SUFFIX)(const Job& job, int begin, int end,
@@ -40,6 +42,13 @@ void WEFT_KERNEL_NAME(update_rows, WEFT_KERNEL_SUFFIX)(const Job& job, int begin
 void WEFT_KERNEL_NAME(unfiltered_product_rows, WEFT_KERNEL_SUFFIX)(const Job& job, int begin,
                                                                    int end) {
     unfiltered_product_rows(job, begin, end);
+}
+
+void WEFT_KERNEL_NAME(multiply_coarse_row,
+                      WEFT_KERNEL_SUFFIX)(const CoarseRows& matrix, int row, CoarseVectorRow above,
+                                          CoarseVectorRow here, CoarseVectorRow below, float* out_x,
+                                          float* out_y, float* out_z) {
+    multiply_coarse_row_in_build(matrix, row, above, here, below, out_x, out_y, out_z);
 }
 
 }  // namespace weft::implicit_kernel

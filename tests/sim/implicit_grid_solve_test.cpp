@@ -104,6 +104,43 @@ TEST(ImplicitGridSolve, EveryKernelBuildGivesTheSameBits) {
     testing::expect_same_bits_on_every_kernel_build([] { return implicit_sheet_hash(2); });
 }
 
+TEST(ImplicitGridSolve, TheFirstCoarseLevelsVCycleFindsTheSameStepsInFewerIterations) {
+    // The V-cycle on the first coarse level (implicit_multilevel.h) and the additive
+    // correction are two preconditioners of the same system: solved to 1e-4, the steps agree
+    // far below the sheet's motion. The V-cycle must be the stronger one: a smoother that broke
+    // the symmetry conjugate gradient needs, or a wrong product, would cost iterations instead.
+    // Measured: 64² sheet, 30 steps of 1/60 s, 25.3 against 36.3 iterations a step, the
+    // positions 0.04 mm apart after a fall of 1.37 m.
+    const Scene scene = cloth_material_sheet(64, 1.0 / 60.0);
+    Simulation v_cycle(scene), additive(scene);
+    ImplicitSolveSettings settings;
+    settings.fixed_tolerance = 1e-4;
+    v_cycle.set_implicit_solve_settings(settings);
+    settings.coarse_smoothing = 0.0;
+    additive.set_implicit_solve_settings(settings);
+    int v_cycle_iterations = 0, additive_iterations = 0;
+    for (int s = 0; s < 30; ++s) {
+        ASSERT_FALSE(v_cycle.step().diverged());
+        ASSERT_FALSE(additive.step().diverged());
+        v_cycle_iterations += v_cycle.last_linear_solve().iterations;
+        additive_iterations += additive.last_linear_solve().iterations;
+    }
+    double largest_difference = 0.0, largest_fall = 0.0;
+    const Simulation unstepped(scene);
+    const Cloth& start = unstepped.cloth();
+    for (std::size_t p = 0; p < start.particle_count(); ++p) {
+        largest_difference =
+            std::max(largest_difference,
+                     glm::length(v_cycle.cloth().positions[p] - additive.cloth().positions[p]));
+        largest_fall =
+            std::max(largest_fall, glm::length(v_cycle.cloth().positions[p] - start.positions[p]));
+    }
+    EXPECT_GT(largest_fall, 1.0);  // m: the sheet fell and swung for 0.5 s
+    EXPECT_LT(largest_difference, 1e-3 * largest_fall);
+    EXPECT_LT(v_cycle_iterations, 0.8 * additive_iterations)
+        << v_cycle_iterations << " against " << additive_iterations;
+}
+
 TEST(ImplicitGridSolve, AHangingChainComesToRestAtItsExactStaticExtension) {
     // A one-column grid is a chain: spring s from the pin carries the weight below it, so its
     // length is L + (N - s) m g / k exactly, a fixed point of the step, reached at 60 Hz.

@@ -248,6 +248,7 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
             // into the first level on the way.
             if (first_round) {
                 solver.multilevel.weight = settings.coarse_weight;
+                solver.multilevel.smoothing = settings.coarse_smoothing;
                 solver.multilevel.build(job, pool);
             }
             r_z += solver.multilevel.apply(job, false, pool);

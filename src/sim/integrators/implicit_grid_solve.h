@@ -52,6 +52,7 @@ struct ImplicitSolveSettings {
     bool warm_start = true;  // start from v0 + the previous step's Δv instead of v0
     bool multilevel = true;  // add the coarse levels to the block-Jacobi preconditioner
     double coarse_weight = 1.0;
+    double coarse_smoothing = 0.8;  // ω of the first coarse level's V-cycle (0: additive)
     // A step that leaves some spring beyond split_stretch_ratio rest lengths and some
     // spring's force further than split_force_error × k L from what the linearised step
     // assumed is taken again as two halves, at most max_split_depth times over

@@ -1,6 +1,8 @@
 #include "sim/integrators/implicit_multilevel.h"
 
 #include <algorithm>
+#include <atomic>
+#include <cstdint>
 
 namespace weft {
 namespace {
@@ -107,9 +109,11 @@ void fine_couplings(const implicit_kernel::Job& job, const implicit_kernel::Dire
 // their share of the fine diagonal blocks (twice -B); the others go to the forward slot, or,
 // pointing back along the row, to the left node's (0, 1) slot. Coarse rows are built whole by
 // one thread, fine rows and columns in order, so every sum is the same for any split.
+// With `rows`, each finished row is also stored there in float (the V-cycle's products).
 void build_from_fine(ImplicitCoarseLevel& level, const implicit_kernel::Job& job,
-                     WorkerPool* pool) {
+                     CoarseRows* float_rows, WorkerPool* pool) {
     size_level(level, (job.rows + 1) / 2, (job.cols + 1) / 2);
+    if (float_rows) float_rows->size_for(level.rows, level.cols);
     int slots[implicit_kernel::max_directions][2][2];
     for (int k = 0; k < job.direction_count; ++k)
         for (int row_parity = 0; row_parity < 2; ++row_parity)
@@ -151,6 +155,7 @@ void build_from_fine(ImplicitCoarseLevel& level, const implicit_kernel::Job& job
             for (int col = 0; col < level.cols; ++col)
                 invert_symmetric_block(&level.diagonal[6 * (first_node + col)],
                                        &level.inverse[6 * (first_node + col)]);
+            if (float_rows) float_rows->store_row(level, row);
         }
     });
 }
@@ -259,6 +264,128 @@ void add_coarser_corrections(std::vector<ImplicitCoarseLevel>& levels, const Ban
         }
 }
 
+// The V-cycle's vectors on the rows of the first level around a pair of rows (pair 2Q, 2Q+1
+// needs 2Q - 1 .. 2Q + 2), in float with the zero end columns CoarseRows' products read.
+// Each thread keeps its own; rows off the level are zeros. A thread's pairs come in order, so
+// the two rows the next pair shares with this one are kept, not filled again.
+struct SmoothingRows {
+    std::vector<float> floats;  // 4 slots × 3 components × row_floats
+    std::size_t row_floats = 0;
+    int first_row = 0;
+    int slot_of_row[4] = {0, 1, 2, 3};  // rows first_row .. first_row + 3 live in these slots
+    std::uint64_t pass = 0;             // which pass filled them (a new pass starts over)
+
+    // Fills the four rows around pair `pair` by row_value(row, out_x, out_y, out_z), which
+    // writes a row's cols floats (rows off the level stay zero).
+    template <class RowValue>
+    void fill(const CoarseRows& matrix, int pair, std::uint64_t pass_id, RowValue&& row_value) {
+        const int new_first = 2 * pair - 1;
+        int kept = 0;
+        if (pass == pass_id && row_floats == matrix.row_floats && new_first == first_row + 2) {
+            std::swap(slot_of_row[0], slot_of_row[2]);
+            std::swap(slot_of_row[1], slot_of_row[3]);
+            kept = 2;
+        } else {
+            row_floats = matrix.row_floats;
+            floats.assign(12 * row_floats, 0.0f);  // grown once: no step allocates
+        }
+        pass = pass_id;
+        first_row = new_first;
+        for (int k = kept; k < 4; ++k) {
+            float* base = slot(k);
+            const int row = first_row + k;
+            if (row < 0 || row >= matrix.rows)
+                std::fill(base, base + 3 * row_floats, 0.0f);
+            else
+                row_value(row, base + 1, base + row_floats + 1, base + 2 * row_floats + 1);
+        }
+    }
+    float* slot(int k) {
+        return &floats[3 * static_cast<std::size_t>(slot_of_row[k]) * row_floats];
+    }
+    CoarseVectorRow row(int level_row) const {
+        const auto k = static_cast<std::size_t>(slot_of_row[level_row - first_row]);
+        const float* base = &floats[3 * k * row_floats + 1];
+        return {base, base + row_floats, base + 2 * row_floats};
+    }
+};
+
+thread_local SmoothingRows smoothing_rows;
+
+// Every pass that fills smoothing rows, of any solver on any thread, has its own number, so
+// no thread mistakes rows it kept from another pass (or another solver's) for this one's.
+std::atomic<std::uint64_t> smoothing_passes{0};
+std::uint64_t next_smoothing_pass() {
+    return smoothing_passes.fetch_add(1, std::memory_order_relaxed) + 1;
+}
+
+// The V-cycle's first smoothing and its restriction, by rows of the second level: with
+// x = ω D_1⁻¹ b (the correction pass 1 or the update passes left), the second level's
+// residual is the sum over each aggregate of b - A_1 x, in a fixed order.
+void restrict_smoothed_residual(std::vector<ImplicitCoarseLevel>& levels, const CoarseRows& matrix,
+                                double smoothing, int fine_particles, WorkerPool* pool) {
+    const ImplicitCoarseLevel& first = levels[0];
+    ImplicitCoarseLevel& second = levels[1];
+    const std::uint64_t pass_id = next_smoothing_pass();
+    over_rows(second.rows, fine_particles, pool, [&](int begin, int end) {
+        thread_local std::vector<float> product;  // grown once
+        product.resize(3 * static_cast<std::size_t>(first.cols));
+        float* px = product.data();
+        float* py = px + first.cols;
+        float* pz = py + first.cols;
+        for (int pair = begin; pair < end; ++pair) {
+            smoothing_rows.fill(matrix, pair, pass_id, [&](int row, float* x, float* y, float* z) {
+                const double* c = &first.correction[3 * static_cast<std::size_t>(row) * first.cols];
+                for (int col = 0; col < first.cols; ++col) {
+                    x[col] = static_cast<float>(smoothing * c[3 * col]);
+                    y[col] = static_cast<float>(smoothing * c[3 * col + 1]);
+                    z[col] = static_cast<float>(smoothing * c[3 * col + 2]);
+                }
+            });
+            double* restricted = &second.residual[3 * static_cast<std::size_t>(pair) * second.cols];
+            std::fill(restricted, restricted + 3 * static_cast<std::size_t>(second.cols), 0.0);
+            for (int row = 2 * pair; row < std::min(2 * pair + 2, first.rows); ++row) {
+                multiply_coarse_row(matrix, row, smoothing_rows.row(row - 1),
+                                    smoothing_rows.row(row), smoothing_rows.row(row + 1), px, py,
+                                    pz);
+                const double* b = &first.residual[3 * static_cast<std::size_t>(row) * first.cols];
+                for (int c = 0; c < first.cols; ++c) {
+                    double* into = restricted + 3 * static_cast<std::size_t>(c / 2);
+                    into[0] += b[3 * c] - static_cast<double>(px[c]);
+                    into[1] += b[3 * c + 1] - static_cast<double>(py[c]);
+                    into[2] += b[3 * c + 2] - static_cast<double>(pz[c]);
+                }
+            }
+        }
+    });
+}
+
+// The V-cycle's second smoothing on first-level row `row` of the pair smoothing_rows holds
+// (y = ω D_1⁻¹ b + P x_2): corrections = y + ω D_1⁻¹ (b - A_1 y), 3 per node.
+void finish_smoothing(const ImplicitCoarseLevel& first, const CoarseRows& matrix, double smoothing,
+                      int row, double* corrections) {
+    thread_local std::vector<float> product;  // grown once
+    product.resize(3 * static_cast<std::size_t>(first.cols));
+    float* px = product.data();
+    float* py = px + first.cols;
+    float* pz = py + first.cols;
+    const CoarseVectorRow y = smoothing_rows.row(row);
+    multiply_coarse_row(matrix, row, smoothing_rows.row(row - 1), y, smoothing_rows.row(row + 1),
+                        px, py, pz);
+    const std::size_t nodes = static_cast<std::size_t>(row) * first.cols;
+    for (int c = 0; c < first.cols; ++c) {
+        const std::size_t n = nodes + static_cast<std::size_t>(c);
+        const double left[3] = {first.residual[3 * n] - static_cast<double>(px[c]),
+                                first.residual[3 * n + 1] - static_cast<double>(py[c]),
+                                first.residual[3 * n + 2] - static_cast<double>(pz[c])};
+        double step[3];
+        multiply_symmetric_block(&first.inverse[6 * n], left, step);
+        double* out = corrections + 3 * static_cast<std::size_t>(c);
+        out[0] = static_cast<double>(y.x[c]) + smoothing * step[0];
+        out[1] = static_cast<double>(y.y[c]) + smoothing * step[1];
+        out[2] = static_cast<double>(y.z[c]) + smoothing * step[2];
+    }
+}
 }  // namespace
 
 void ImplicitMultilevel::build(const implicit_kernel::Job& job, WorkerPool* pool) {
@@ -269,7 +396,7 @@ void ImplicitMultilevel::build(const implicit_kernel::Job& job, WorkerPool* pool
         ++count;
     levels.resize(count);
     if (count == 0) return;
-    build_from_fine(levels[0], job, pool);
+    build_from_fine(levels[0], job, count > 1 && smoothing > 0.0 ? &first_rows : nullptr, pool);
     for (std::size_t l = 1; l < count; ++l) build_from_coarse(levels[l], levels[l - 1]);
     factor_exactly(levels.back(), exact);
 }
@@ -287,11 +414,12 @@ double ImplicitMultilevel::apply(const implicit_kernel::Job& job, bool restricte
                                  WorkerPool* pool) {
     if (levels.empty()) return 0.0;
     ImplicitCoarseLevel& first = levels[0];
+    const int fine_particles = job.rows * job.cols;
     // Pass 1, by rows of the first coarse level: its residual, the sum of its 2x2 fine
     // residuals in a fixed order (pinned particles' are zero), and its own D⁻¹ correction;
     // unless the update pass has done it on the way (implicit_grid_kernel.h).
     if (!restricted)
-        over_rows(first.rows, job.rows * job.cols, pool, [&](int begin, int end) {
+        over_rows(first.rows, fine_particles, pool, [&](int begin, int end) {
             for (int row = begin; row < end; ++row)
                 for (int col = 0; col < first.cols; ++col) {
                     const std::size_t n = static_cast<std::size_t>(row) * first.cols + col;
@@ -311,55 +439,89 @@ double ImplicitMultilevel::apply(const implicit_kernel::Job& job, bool restricte
     // The second level and the coarser ones are small (a quarter of the first and less): one
     // thread. The second's correction (its own and the coarser levels') is prolonged into
     // the first's in pass 2, split between the threads.
+    const bool v_cycle = smoothing > 0.0 && levels.size() > 1;
     if (levels.size() == 1) {  // the first level is the coarsest: exact, not D⁻¹
         first.correction = first.residual;
         exact.solve(first.correction.data());
     } else {
-        restrict_to_coarser(levels, 0);
+        if (v_cycle)
+            restrict_smoothed_residual(levels, first_rows, smoothing, fine_particles, pool);
+        else
+            restrict_to_coarser(levels, 0);
         apply_level(levels, exact, 1, weight);
     }
-    // Pass 2, by rows of the first level: its correction plus the second's, r · P x_c =
-    // (Pᵀ r) · x_c per row of nodes (summed in row order below), the correction spread along
-    // the row's fine columns in single precision, then z += P x_c on the free particles of
-    // the row's two fine rows.
+    // Pass 2, by pairs of rows of the first level: its correction (the V-cycle's second
+    // smoothing, or D_1⁻¹ r_1 plus the second level's), r · P x_c = (Pᵀ r) · x_c per row of
+    // nodes (summed in row order below), the correction spread along the row's fine columns
+    // in single precision, then z += P x_c on the free particles of the row's two fine rows.
     const auto cols = static_cast<std::size_t>(job.cols);
     spread.resize(3 * static_cast<std::size_t>(first.rows) * cols);
     added_by_row.resize(static_cast<std::size_t>(first.rows));
-    over_rows(first.rows, job.rows * job.cols, pool, [&](int begin, int end) {
-        for (int row = begin; row < end; ++row) {
-            const std::size_t nodes = static_cast<std::size_t>(row) * first.cols;
-            if (levels.size() > 1) {
+    const int pairs = (first.rows + 1) / 2;
+    const std::uint64_t finish_pass = v_cycle ? next_smoothing_pass() : 0;
+    over_rows(pairs, fine_particles, pool, [&](int begin, int end) {
+        thread_local std::vector<double> corrections;  // grown once: no step allocates
+        corrections.resize(3 * static_cast<std::size_t>(first.cols));
+        for (int pair = begin; pair < end; ++pair) {
+            if (v_cycle) {
                 const ImplicitCoarseLevel& second = levels[1];
-                for (int col = 0; col < first.cols; ++col) {
-                    const std::size_t n = nodes + static_cast<std::size_t>(col);
-                    const auto m = static_cast<std::size_t>(aggregate(row, col, second.cols));
-                    for (int a = 0; a < 3; ++a)
-                        first.correction[3 * n + a] += weight * second.correction[3 * m + a];
+                smoothing_rows.fill(
+                    first_rows, pair, finish_pass, [&](int row, float* x, float* y, float* z) {
+                        const double* c =
+                            &first.correction[3 * static_cast<std::size_t>(row) * first.cols];
+                        const double* coarse =
+                            &second.correction[3 * static_cast<std::size_t>(row / 2) * second.cols];
+                        for (int col = 0; col < first.cols; ++col) {
+                            const double* below = coarse + 3 * (col / 2);
+                            x[col] = static_cast<float>(smoothing * c[3 * col] + below[0]);
+                            y[col] = static_cast<float>(smoothing * c[3 * col + 1] + below[1]);
+                            z[col] = static_cast<float>(smoothing * c[3 * col + 2] + below[2]);
+                        }
+                    });
+            }
+            for (int row = 2 * pair; row < std::min(2 * pair + 2, first.rows); ++row) {
+                const std::size_t nodes = static_cast<std::size_t>(row) * first.cols;
+                if (v_cycle)
+                    finish_smoothing(first, first_rows, smoothing, row, corrections.data());
+                else
+                    for (int col = 0; col < first.cols; ++col) {
+                        const std::size_t n = nodes + static_cast<std::size_t>(col);
+                        for (int a = 0; a < 3; ++a) {
+                            double value = first.correction[3 * n + a];
+                            if (levels.size() > 1)
+                                value +=
+                                    weight *
+                                    levels[1].correction[3 * static_cast<std::size_t>(aggregate(
+                                                                 row, col, levels[1].cols)) +
+                                                         a];
+                            corrections[3 * static_cast<std::size_t>(col) + a] = value;
+                        }
+                    }
+                double added_here = 0.0;
+                for (std::size_t k = 0; k < 3 * static_cast<std::size_t>(first.cols); ++k)
+                    added_here += weight * first.residual[3 * nodes + k] * corrections[k];
+                added_by_row[static_cast<std::size_t>(row)] = added_here;
+                float* x = &spread[3 * static_cast<std::size_t>(row) * cols];
+                for (std::size_t c = 0; c < cols; ++c) {
+                    const double* correction = &corrections[3 * (c / 2)];
+                    x[c] = static_cast<float>(weight * correction[0]);
+                    x[cols + c] = static_cast<float>(weight * correction[1]);
+                    x[2 * cols + c] = static_cast<float>(weight * correction[2]);
                 }
-            }
-            double added_here = 0.0;
-            for (std::size_t n = 3 * nodes; n < 3 * (nodes + first.cols); ++n)
-                added_here += weight * first.residual[n] * first.correction[n];
-            added_by_row[static_cast<std::size_t>(row)] = added_here;
-            float* x = &spread[3 * static_cast<std::size_t>(row) * cols];
-            for (std::size_t c = 0; c < cols; ++c) {
-                const double* correction = &first.correction[3 * (nodes + c / 2)];
-                x[c] = static_cast<float>(weight * correction[0]);
-                x[cols + c] = static_cast<float>(weight * correction[1]);
-                x[2 * cols + c] = static_cast<float>(weight * correction[2]);
-            }
-            for (int r = 2 * row; r < std::min(2 * row + 2, job.rows); ++r) {
-                const std::size_t base = job.pad + static_cast<std::size_t>(r) * cols;
-                add_masked(job.preconditioned.x + base, job.free + base, x, job.cols);
-                add_masked(job.preconditioned.y + base, job.free + base, x + cols, job.cols);
-                add_masked(job.preconditioned.z + base, job.free + base, x + 2 * cols, job.cols);
-                // z stays in the filtered space: S P x_c at particles held on a surface.
-                // (r · S P x_c = r · P x_c, r being filtered: the sum above holds.)
-                if (job.has_contacts)
-                    filter_contacts_row(job.contact_normal.x + base, job.contact_normal.y + base,
-                                        job.contact_normal.z + base, job.preconditioned.x + base,
-                                        job.preconditioned.y + base, job.preconditioned.z + base,
-                                        job.cols);
+                for (int r = 2 * row; r < std::min(2 * row + 2, job.rows); ++r) {
+                    const std::size_t base = job.pad + static_cast<std::size_t>(r) * cols;
+                    add_masked(job.preconditioned.x + base, job.free + base, x, job.cols);
+                    add_masked(job.preconditioned.y + base, job.free + base, x + cols, job.cols);
+                    add_masked(job.preconditioned.z + base, job.free + base, x + 2 * cols,
+                               job.cols);
+                    // z stays in the filtered space: S P x_c at particles held on a surface.
+                    // (r · S P x_c = r · P x_c, r being filtered: the sum above holds.)
+                    if (job.has_contacts)
+                        filter_contacts_row(
+                            job.contact_normal.x + base, job.contact_normal.y + base,
+                            job.contact_normal.z + base, job.preconditioned.x + base,
+                            job.preconditioned.y + base, job.preconditioned.z + base, job.cols);
+                }
             }
         }
     });

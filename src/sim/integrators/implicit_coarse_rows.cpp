@@ -6,7 +6,11 @@
 #include "sim/integrators/implicit_multilevel.h"
 
 namespace weft {
+
 void CoarseRows::size_for(int level_rows, int level_cols) {
+    // Every build stores every node of every row (store_row); the row above row 0 and the end
+    // columns are never written, so a level of the same shape keeps its zeros.
+    if (level_rows == rows && level_cols == cols && !storage.empty()) return;
     rows = level_rows;
     cols = level_cols;
     row_floats = static_cast<std::size_t>(cols) + 2;

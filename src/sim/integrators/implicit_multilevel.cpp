@@ -436,7 +436,8 @@ double ImplicitMultilevel::apply(const implicit_kernel::Job& job, bool restricte
                     multiply_symmetric_block(&first.inverse[6 * n], sum, &first.correction[3 * n]);
                 }
         });
-    // The second level and the coarser ones are small (a quarter of the first and less): one
+    // The V-cycle's first smoothing runs on the threads, by pairs of first-level rows. The
+    // second level and the coarser ones are small (a quarter of the first and less): one
     // thread. The second's correction (its own and the coarser levels') is prolonged into
     // the first's in pass 2, split between the threads.
     const bool v_cycle = smoothing > 0.0 && levels.size() > 1;

@@ -48,7 +48,8 @@ void load(BandedCholesky& exact, const std::vector<double>& a, std::size_t size,
 TEST(BandedCholesky, SolvesABandMatrixExactly) {
     for (const std::size_t band : {0u, 1u, 6u, 29u}) {
         const std::size_t size = 60;
-        const std::vector<double> a = random_band_matrix(size, band, 7 + band);
+        const std::vector<double> a =
+            random_band_matrix(size, band, static_cast<unsigned>(7 + band));
         std::vector<double> x(size);
         for (std::size_t i = 0; i < size; ++i) x[i] = std::sin(0.3 * static_cast<double>(i));
         std::vector<double> values = times(a, x);

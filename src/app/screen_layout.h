@@ -21,7 +21,7 @@ struct WindowLayout {
 
 // The layout of a window `width` x `height` px. Open, the panel is the window's full height
 // and 30 % of its width, at least 300 px (a label column wide enough for the longest label,
-// "wind heading (deg)", beside sliders wide enough for their numbers) and at most 400 (more
+// "field of view (deg)", beside sliders wide enough for their numbers) and at most 400 (more
 // is empty space), but never more than half the window: the cloth keeps at least half.
 // Folded, the panel is its title bar, a strip `title_height` px tall at the top of its
 // column, and the view is the whole window below that strip. Widths are whole pixels, so

@@ -51,6 +51,11 @@ struct Cloth {
     double spacing = 0.0;        // m, rest distance between grid neighbours
     double row_pitch = 1.0;      // rest distance between rows, in spacings (offset: √3/2)
     double odd_row_shift = 0.0;  // odd rows' shift along a row, in spacings (offset: 1/2)
+    // A mesh cloth (mesh_builder.h) is no grid: its particles count as one row (rows = 1,
+    // cols = particle count), `spacing` is its mean structural rest length, and this is its
+    // size, the diagonal of its rest shape's bounding box, m. 0 for the grid builders' cloths,
+    // whose size follows from rows, cols and spacing.
+    double mesh_extent = 0.0;
 
     // Per-step state.
     std::vector<Vec3> positions;   // m

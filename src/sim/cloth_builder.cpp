@@ -1,5 +1,6 @@
 #include "sim/cloth_builder.h"
 
+#include "sim/mesh_builder.h"
 #include "sim/spring_coloring.h"
 
 #include <algorithm>
@@ -82,6 +83,9 @@ Cloth place_particles(const ClothSpec& spec, double row_pitch, double odd_row_sh
         case PinPreset::list:
             for (const GridIndex& p : spec.pin_list) pin(p.row, p.col);
             break;
+        case PinPreset::vertices:  // a mesh's pins (mesh_builder.cpp)
+        case PinPreset::group:
+            break;
     }
     for (std::size_t i = 0; i < count; ++i)
         if (cloth.inverse_masses[i] == 0.0) cloth.pinned.push_back(static_cast<std::uint32_t>(i));
@@ -152,6 +156,7 @@ Cloth build_offset_cloth(const Scene& scene) {
 }
 
 Cloth build_cloth(const Scene& scene) {
+    if (!scene.cloth.mesh.empty()) return build_mesh_cloth(scene);
     return scene.cloth.layout == Layout::offset ? build_offset_cloth(scene)
                                                 : build_grid_cloth(scene);
 }

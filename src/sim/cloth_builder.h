@@ -19,7 +19,7 @@ Cloth build_grid_cloth(const Scene& scene);
 // lattice lines.
 Cloth build_offset_cloth(const Scene& scene);
 
-// The builder the scene's layout asks for.
+// The builder the scene asks for: its mesh (mesh_builder.h), or its layout's grid.
 Cloth build_cloth(const Scene& scene);
 
 }  // namespace weft

@@ -24,10 +24,12 @@ double energy_scale(const Cloth& cloth, const ForceField& field) {
     for (std::size_t p = 0; p < cloth.particle_count(); ++p)
         if (!cloth.is_pinned(p)) mass += cloth.masses[p];
     const double diagonal =
-        cloth.spacing *
-        std::hypot(static_cast<double>(std::max(cloth.rows - 1, 0)) * cloth.row_pitch,
-                   static_cast<double>(std::max(cloth.cols - 1, 0)));  // m
-    return mass * (glm::length(field.gravity) * diagonal + 0.5);       // 0.5: ½ (1 m/s)²
+        cloth.mesh_extent > 0.0
+            ? cloth.mesh_extent
+            : cloth.spacing *
+                  std::hypot(static_cast<double>(std::max(cloth.rows - 1, 0)) * cloth.row_pitch,
+                             static_cast<double>(std::max(cloth.cols - 1, 0)));  // m
+    return mass * (glm::length(field.gravity) * diagonal + 0.5);  // 0.5: ½ (1 m/s)²
 }
 
 }  // namespace

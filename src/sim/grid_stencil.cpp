@@ -28,8 +28,9 @@ void build_grid_stencil(Cloth& cloth) {
     GridStencil& stencil = cloth.grid_stencil;
     stencil = GridStencil{};
     const std::size_t count = cloth.particle_count();
-    const bool plain_grid = cloth.odd_row_shift == 0.0 && cloth.row_pitch == 1.0 &&
-                            cloth.rows >= 1 && cloth.cols >= 1 &&
+    // A mesh's one "row" could pass for a grid whose springs happen to join neighbours.
+    const bool plain_grid = cloth.mesh_extent == 0.0 && cloth.odd_row_shift == 0.0 &&
+                            cloth.row_pitch == 1.0 && cloth.rows >= 1 && cloth.cols >= 1 &&
                             static_cast<std::size_t>(cloth.rows) * cloth.cols == count;
     if (!plain_grid) return;
     const auto cols = static_cast<std::uint32_t>(cloth.cols);

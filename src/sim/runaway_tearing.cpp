@@ -1,6 +1,7 @@
 #include "sim/runaway_tearing.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace weft {
@@ -9,8 +10,13 @@ namespace {
 // The most springs one straight line across the sheet crosses: a row's worth, across the
 // shorter side (a row of a wide sheet crosses the springs between two rows: about
 // springs / (rows - 1) of them).
+// A mesh (one "row" of particles) counts as a square sheet of as many particles.
 double springs_per_line(const Cloth& cloth, std::size_t springs) {
-    const int gaps = std::max(std::min(cloth.rows, cloth.cols) - 1, 1);
+    const int across =
+        cloth.mesh_extent > 0.0
+            ? static_cast<int>(std::sqrt(static_cast<double>(cloth.particle_count())))
+            : std::min(cloth.rows, cloth.cols);
+    const int gaps = std::max(across - 1, 1);
     return static_cast<double>(springs) / gaps;
 }
 

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -15,7 +17,8 @@ using Vec3d = std::array<double, 3>;
 
 enum class Layout { grid, offset };
 enum class Orientation { vertical, horizontal };
-enum class PinPreset { none, top_corners, top_row, list };
+// `list` pins grid particles by [row, col]; `vertices` and `group` pin a mesh's vertices.
+enum class PinPreset { none, top_corners, top_row, list, vertices, group };
 
 enum class Integrator {
     explicit_euler,
@@ -36,6 +39,16 @@ struct GridIndex {
     bool operator==(const GridIndex&) const = default;
 };
 
+struct ObjMesh;  // obj_reader.h
+
+// A mesh cloth's OBJ, read once by the scene loader and shared by every copy of the scene.
+// Equal when the meshes are equal, wherever they are held.
+struct LoadedMesh {
+    std::shared_ptr<const ObjMesh> obj;
+
+    bool operator==(const LoadedMesh& other) const;
+};
+
 struct ClothSpec {
     int rows = 24;                // particles from top to bottom (>= 1)
     int cols = 24;                // particles from left to right (>= 1)
@@ -46,6 +59,14 @@ struct ClothSpec {
     Vec3d origin = {0.0, 0.0, 0.0};  // m, position of particle (0, 0)
     PinPreset pin_preset = PinPreset::top_corners;
     std::vector<GridIndex> pin_list;  // used when pin_preset == list
+
+    // Instead of a grid, a triangle mesh (mesh_builder.h). Then rows, cols, spacing,
+    // particle_mass, layout and orientation do not apply, and pins are none, vertices or group.
+    std::string mesh;                        // OBJ path, absolute once loaded; "" = a grid
+    LoadedMesh mesh_data;                    // the OBJ, set by the scene loader
+    double density = 0.2;                    // kg/m², mass per area of the mesh (> 0)
+    std::vector<std::int64_t> pin_vertices;  // vertex numbers as in the OBJ (1-based)
+    std::string pin_group;                   // an OBJ group (g or o) whose vertices are pinned
 
     bool operator==(const ClothSpec&) const = default;
 };

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "sim/scene_loader.h"
+#include "sim/scene_toml_mesh.h"
 #include "sim/toml_input_guard.h"
 #include "sim/toml_reader.h"
 
@@ -34,6 +35,8 @@ const char* pin_preset_name(PinPreset preset) {
         case PinPreset::top_row:
             return "top-row";
         case PinPreset::list:
+        case PinPreset::vertices:
+        case PinPreset::group:
             break;
     }
     return nullptr;
@@ -125,9 +128,14 @@ void read_cloth(TomlReader& reader, const toml::table& root, Scene& scene) {
     const toml::table* cloth = reader.sub_table(root, "", "cloth");
     if (!cloth) return;
     ClothSpec& spec = scene.cloth;
-    reader.check_keys(
-        *cloth, "cloth",
-        {"rows", "cols", "spacing", "particle_mass", "layout", "orientation", "origin", "pins"});
+    reader.check_keys(*cloth, "cloth",
+                      {"rows", "cols", "spacing", "particle_mass", "layout", "orientation",
+                       "origin", "pins", "mesh", "density", "pin_group"});
+    if (cloth->get("mesh")) return read_mesh_keys(reader, *cloth, spec);
+    for (const char* key : {"density", "pin_group"})
+        if (const toml::node* node = cloth->get(key); node && !reader.failed())
+            reader.fail(*node, std::string("cloth.") + key,
+                        std::string("cloth.") + key + " applies only to a mesh (cloth.mesh)");
     std::int64_t rows = spec.rows, cols = spec.cols;
     reader.read_int(*cloth, "cloth", "rows", 1, max_particles, rows);
     reader.read_int(*cloth, "cloth", "cols", 1, max_particles, cols);
@@ -167,12 +175,13 @@ void read_springs(TomlReader& reader, const toml::table& root, Scene& scene) {
 
 // An optional single-key table such as [tearing]: absent means the feature is off; present
 // means on, with the key's value or its default.
-std::string thickness_refusal(double thickness, double max_spacings, double spacing) {
-    char text[200];
+std::string thickness_refusal(double thickness, double max_spacings, double spacing, bool mesh) {
+    char text[240];
     std::snprintf(text, sizeof text,
-                  "a thickness of %.4g m is more than %g particle spacings (cloth.spacing = %.4g "
+                  "a thickness of %.4g m is more than %g particle spacings (%s = %.4g "
                   "m): every particle would be within it of dozens of others; at most %.4g m",
-                  thickness, max_spacings, spacing, max_spacings * spacing);
+                  thickness, max_spacings, mesh ? "the mesh's mean edge length" : "cloth.spacing",
+                  spacing, max_spacings * spacing);
     return text;
 }
 
@@ -349,6 +358,9 @@ SceneLoadResult load_scene_text(std::string_view toml_text, std::string_view sou
                        "forces", "solver", "colliders", "camera"});
     reader.read_string(root, "", "name", scene.name);
     read_cloth(reader, root, scene);
+    const std::optional<double> mesh_spacing =
+        load_scene_mesh(reader, root, source_name, scene.cloth);
+    const double spacing = mesh_spacing.value_or(scene.cloth.spacing);  // m
     read_springs(reader, root, scene);
     read_optional_feature(reader, root, "tearing", "max_stretch", 1.6, 1.0, scene.tear_max_stretch);
     read_optional_feature(reader, root, "strain_limit", "max_stretch", 0.1, 0.0,
@@ -360,13 +372,13 @@ SceneLoadResult load_scene_text(std::string_view toml_text, std::string_view sou
     // the flat sheet pushes itself apart. The shipped scenes use 0.5 to 0.75 spacings.
     constexpr double max_thickness_spacings = 2.0;
     if (!reader.failed() && scene.self_collision_thickness &&
-        *scene.self_collision_thickness > max_thickness_spacings * scene.cloth.spacing) {
+        *scene.self_collision_thickness > max_thickness_spacings * spacing) {
         const toml::table& table = *root["self_collision"].as_table();
         const toml::node* node = table.get("thickness");
         reader.fail(node ? *node : static_cast<const toml::node&>(table),
                     "self_collision.thickness",
                     thickness_refusal(*scene.self_collision_thickness, max_thickness_spacings,
-                                      scene.cloth.spacing));
+                                      spacing, mesh_spacing.has_value()));
     }
     read_forces_and_solver(reader, root, scene);
     read_colliders(reader, root, scene);

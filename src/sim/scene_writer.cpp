@@ -20,6 +20,42 @@ void spring_family(std::ostringstream& out, const char* name, const SpringFamily
     out << "damping = " << toml_number(spec.damping) << "  # N·s/m\n";
 }
 
+// A grid's keys.
+void grid_cloth(std::ostringstream& out, const ClothSpec& cloth) {
+    out << "rows = " << cloth.rows << "\ncols = " << cloth.cols << "\n";
+    out << "spacing = " << toml_number(cloth.spacing) << "  # m\n";
+    out << "particle_mass = " << toml_number(cloth.particle_mass) << "  # kg\n";
+    out << "layout = \"" << layout_name(cloth.layout) << "\"\n";
+    out << "orientation = \"" << orientation_name(cloth.orientation) << "\"\n";
+    out << "origin = " << vec3(cloth.origin) << "  # m\n";
+    if (const char* preset = pin_preset_name(cloth.pin_preset)) {
+        out << "pins = \"" << preset << "\"\n";
+    } else {
+        out << "pins = [";
+        for (std::size_t p = 0; p < cloth.pin_list.size(); ++p)
+            out << (p ? ", " : "") << "[" << cloth.pin_list[p].row << ", " << cloth.pin_list[p].col
+                << "]";
+        out << "]\n";
+    }
+}
+
+// A mesh's keys: the grid's do not apply (the loader refuses them beside `mesh`).
+void mesh_cloth(std::ostringstream& out, const ClothSpec& cloth) {
+    out << "mesh = " << toml_string(cloth.mesh) << "\n";
+    out << "density = " << toml_number(cloth.density) << "  # kg/m²\n";
+    out << "origin = " << vec3(cloth.origin) << "  # m\n";
+    if (cloth.pin_preset == PinPreset::group) {
+        out << "pin_group = " << toml_string(cloth.pin_group) << "\n";
+    } else if (cloth.pin_preset == PinPreset::vertices) {
+        out << "pins = [";
+        for (std::size_t p = 0; p < cloth.pin_vertices.size(); ++p)
+            out << (p ? ", " : "") << cloth.pin_vertices[p];
+        out << "]\n";
+    } else {
+        out << "pins = \"none\"\n";
+    }
+}
+
 }  // namespace
 
 std::string toml_number(double value) {
@@ -54,20 +90,10 @@ std::string scene_to_toml(const Scene& scene) {
 
     const ClothSpec& cloth = scene.cloth;
     out << "\n[cloth]\n";
-    out << "rows = " << cloth.rows << "\ncols = " << cloth.cols << "\n";
-    out << "spacing = " << toml_number(cloth.spacing) << "  # m\n";
-    out << "particle_mass = " << toml_number(cloth.particle_mass) << "  # kg\n";
-    out << "layout = \"" << layout_name(cloth.layout) << "\"\n";
-    out << "orientation = \"" << orientation_name(cloth.orientation) << "\"\n";
-    out << "origin = " << vec3(cloth.origin) << "  # m\n";
-    if (const char* preset = pin_preset_name(cloth.pin_preset)) {
-        out << "pins = \"" << preset << "\"\n";
+    if (!cloth.mesh.empty()) {
+        mesh_cloth(out, cloth);
     } else {
-        out << "pins = [";
-        for (std::size_t p = 0; p < cloth.pin_list.size(); ++p)
-            out << (p ? ", " : "") << "[" << cloth.pin_list[p].row << ", " << cloth.pin_list[p].col
-                << "]";
-        out << "]\n";
+        grid_cloth(out, cloth);
     }
 
     spring_family(out, "structural", scene.structural, true);

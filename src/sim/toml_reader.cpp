@@ -98,6 +98,11 @@ bool TomlReader::fail_at(const toml::source_region& region, const std::string& p
     return false;
 }
 
+bool TomlReader::fail_with(SceneError error) {
+    if (!error_) error_ = std::move(error);
+    return false;
+}
+
 bool TomlReader::fail(const toml::node& node, const std::string& path, std::string what) {
     return fail_at(node.source(), path, std::move(what));
 }

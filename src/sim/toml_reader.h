@@ -32,6 +32,8 @@ class TomlReader {
     // Records an error at `node` (a value read from `path`, a dotted key path).
     bool fail(const toml::node& node, const std::string& path, std::string what);
     bool fail_at(const toml::source_region& region, const std::string& path, std::string what);
+    // Records an error found outside the document, e.g. at a line of the mesh file it names.
+    bool fail_with(SceneError error);
 
     // Every key of `table` (at `path`; "" for the root) must be in `allowed`.
     bool check_keys(const toml::table& table, const std::string& path,

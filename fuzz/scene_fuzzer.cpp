@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "sim/obj_reader.h"
 #include "sim/scene_loader.h"
 #include "sim/simulation.h"
 
@@ -31,14 +32,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const weft::SceneLoadResult result = weft::load_scene_text(toml_text, "fuzz.toml", overrides);
     if (!result.ok()) {
         // A refusal must say where and what.
-        if (!result.error || result.error->where.empty() || result.error->what.empty()) std::abort();
+        if (!result.error || result.error->where.empty() || result.error->what.empty())
+            std::abort();
         return 0;
     }
     const weft::Scene& scene = *result.scene;
     if (weft::Simulation::unsupported_feature(scene)) return 0;
-    // Building is bounded by the loader's particle limit; stepping a big grid is only slow,
-    // so the fuzzer steps small ones.
-    if (static_cast<long long>(scene.cloth.rows) * scene.cloth.cols > 4096) return 0;
+    // Building is bounded by the loader's particle limit; stepping a big grid (or a big mesh
+    // that a scene names on this machine) is only slow, so the fuzzer steps small ones.
+    const long long particles =
+        scene.cloth.mesh_data.obj
+            ? static_cast<long long>(scene.cloth.mesh_data.obj->vertices.size())
+            : static_cast<long long>(scene.cloth.rows) * scene.cloth.cols;
+    if (particles > 4096) return 0;
     weft::Simulation simulation(scene);
     for (int step = 0; step < 20; ++step)
         if (simulation.step().diverged()) break;

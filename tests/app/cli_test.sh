@@ -57,6 +57,18 @@ expect 2 '^error: --set' -- --headless "$scenes/hanging_sheet.toml" --steps 1 --
 expect 2 '^error: --set cloth.(rows|cols): .*4194304' -- --headless "$scenes/hanging_sheet.toml" --steps 1 \
   --set cloth.rows=100000 --set cloth.cols=100000
 expect 2 "^error: $work/missing.toml: " -- --headless "$work/missing.toml" --steps 1
+# A mesh cloth (issue 19) runs headless, one dump line per vertex; a bad OBJ is refused with
+# the OBJ's own file:line (its path made absolute, as the scene keeps it) and what is wrong.
+printf 'v 0 0 0\nv 1 0 0\nv 1 -1 0\nv 0 -1 0\nf 1 4 3 2\n' >"$work/square.obj"
+printf '[cloth]\nmesh = "square.obj"\npins = [1, 2]\n' >"$work/mesh.toml"
+expect 0 quiet -- --headless "$work/mesh.toml" --steps 10 --dump "$work/mesh.csv"
+check "a mesh dumps one line per vertex" test "$(tail -n +2 "$work/mesh.csv" | wc -l)" -eq 4
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n' >"$work/bad.obj"
+printf '[cloth]\nmesh = "bad.obj"\n' >"$work/bad_mesh.toml"
+expect 2 "^error: $work/bad.obj:4: .*'4'" -- --headless "$work/bad_mesh.toml" --steps 10
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n' >"$work/fan.obj"
+printf '[cloth]\nmesh = "fan.obj"\n' >"$work/fan.toml"
+expect 2 "^error: $work/fan.obj:8: .*more than two faces" -- --headless "$work/fan.toml" --steps 10
 # A directory reads as an empty file, which is the default scene: it must be refused, by the
 # headless run, a replay, and the window before it opens one (no video driver here: a window
 # that tried would fail with another message).

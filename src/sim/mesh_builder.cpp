@@ -102,6 +102,15 @@ void add_bend(const ObjMesh& mesh, const Side& one, const Side& other, std::vect
                                std::to_string(b.line) + " fold onto each other across the edge " +
                                vertex_pair(one.edge) + " (vertex " +
                                std::to_string(springs[n].first + 1) + " is on both sides)");
+        // Two corners at one point (a seam closed with duplicated vertices, folded): a spring
+        // of zero rest length would count as stretched without end.
+        if (mesh.vertices[springs[n].first] == mesh.vertices[springs[n].second])
+            throw ObjError(mesh.path, b.line,
+                           "the faces on lines " + std::to_string(a.line) + " and " +
+                               std::to_string(b.line) + " fold onto each other across the edge " +
+                               vertex_pair(one.edge) + " (vertices " +
+                               std::to_string(springs[n].first + 1) + " and " +
+                               std::to_string(springs[n].second + 1) + " are at one point)");
         bend.push_back(ordered(springs[n].first, springs[n].second));
     }
 }

@@ -224,6 +224,8 @@ TEST(MeshBuilder, RefusesAVertexInNoFace) {
 
 TEST(MeshBuilder, RefusesTheSameTriangleTwice) {
     expect_refused("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 3 2 1\n", 5, "fold onto each other");
+    // The same, with the far corner duplicated: the bend spring would have no length.
+    expect_refused("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 1 0\nf 1 2 3\nf 2 1 4\n", 6, "are at one point");
 }
 
 // A triangulated sheet of 8 × 8 vertices, 0.05 m apart, hung by its top corners.

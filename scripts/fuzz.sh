@@ -30,27 +30,16 @@ scripts/setup.sh
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -j 2 --target weft_scene_fuzzer weft_session_fuzzer \
   weft_obj_fuzzer
-fuzzer=build/fuzz/fuzz/weft_scene_fuzzer
-# Every earlier finding first: each must now load or be refused cleanly.
-"$fuzzer" -rss_limit_mb=2048 -timeout=10 fuzz/regressions/*
-corpus=build/fuzz/corpus
-mkdir -p "$corpus"
-cp -n assets/scenes/*.toml "$corpus"/
-"$fuzzer" "$corpus" -dict=fuzz/dictionary/scene.dict -max_total_time="$seconds" \
-  -rss_limit_mb=2048 -timeout=10 -max_len=4096 -print_final_stats=1 2>&1 | tail -n 12
-
-session_fuzzer=build/fuzz/fuzz/weft_session_fuzzer
-session_corpus=build/fuzz/session-corpus
-mkdir -p "$session_corpus"
-cp -n fuzz/sessions/*.toml "$session_corpus"/
-"$session_fuzzer" "$session_corpus" -dict=fuzz/dictionary/scene.dict \
-  -max_total_time=$((seconds / 2)) -rss_limit_mb=2048 -timeout=10 -max_len=8192 \
-  -print_final_stats=1 2>&1 | tail -n 12
-
-obj_fuzzer=build/fuzz/fuzz/weft_obj_fuzzer
-obj_corpus=build/fuzz/obj-corpus
-mkdir -p "$obj_corpus"
-cp -n fuzz/obj/*.obj "$obj_corpus"/
-"$obj_fuzzer" "$obj_corpus" -dict=fuzz/dictionary/obj.dict \
-  -max_total_time=$((seconds / 2)) -rss_limit_mb=2048 -timeout=10 -max_len=8192 \
-  -print_final_stats=1 2>&1 | tail -n 12
+# fuzz NAME SEEDS DICTIONARY SECONDS MAX_LEN: every earlier finding first (each must now load
+# or be refused cleanly), then a run from a corpus seeded with SEEDS.
+fuzz() {
+  local fuzzer=build/fuzz/fuzz/weft_$1_fuzzer corpus=build/fuzz/$1-corpus
+  "$fuzzer" -rss_limit_mb=2048 -timeout=10 fuzz/regressions/*
+  mkdir -p "$corpus"
+  cp -n $2 "$corpus"/
+  "$fuzzer" "$corpus" -dict="$3" -max_total_time="$4" -rss_limit_mb=2048 -timeout=10 \
+    -max_len="$5" -print_final_stats=1 2>&1 | tail -n 12
+}
+fuzz scene "assets/scenes/*.toml" fuzz/dictionary/scene.dict "$seconds" 4096
+fuzz session "fuzz/sessions/*.toml" fuzz/dictionary/scene.dict $((seconds / 2)) 8192
+fuzz obj "fuzz/obj/*.obj" fuzz/dictionary/obj.dict $((seconds / 2)) 8192

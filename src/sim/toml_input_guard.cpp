@@ -72,6 +72,12 @@ std::optional<TextPosition> find_unsafe_non_ascii(std::string_view text) {
                     if (c == '\\') {
                         std::size_t next = at + 1;
                         while (next < text.size() && is_blank(text[next])) ++next;
+                        // The parser classifies the code point after the backslash, and
+                        // after any blanks that follow it, as possible whitespace. A
+                        // non-ASCII one there is an invalid escape in TOML anyway.
+                        if (next < text.size() && static_cast<unsigned char>(text[next]) >= 0x80)
+                            return TextPosition{position.line,
+                                                position.column + static_cast<int>(next - at)};
                         if (next < text.size() && text[next] == '\n')
                             trimming = true;
                         else

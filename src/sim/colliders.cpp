@@ -1,5 +1,7 @@
 #include "sim/colliders.h"
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <glm/geometric.hpp>
 
@@ -98,44 +100,59 @@ unsigned maybe_inside(const Collider& collider, const double* x, std::size_t fir
     return maybe;
 }
 
+// Work below this many particles stays on the calling thread (the hand-off costs more).
+constexpr std::size_t min_particles_for_threads = 4096;
+
 // Moves every free particle found inside an impulse collider onto its surface, then hands it
 // to `respond(collider, velocity, outward_normal)`; returns how many there were.
+//
+// Each particle meets the colliders in their order and nothing else: particles are
+// independent, so the blocks are split between the pool's threads, and each particle's
+// result (and the count, a sum of integers) is the same for any split.
 template <class Respond>
 std::size_t move_onto_impulse_colliders(std::span<const Collider> colliders, Cloth& cloth,
-                                        Respond respond) {
-    std::size_t moved = 0;
+                                        WorkerPool* pool, Respond respond) {
     Vec3* positions = cloth.positions.data();
     Vec3* velocities = cloth.velocities.data();
     const std::size_t count = cloth.particle_count();
-    for (const Collider& collider : colliders) {
-        if (collider.response != ContactResponse::impulse) continue;
-        // Most of the sheet, most of the time, is clear of the solid: the test runs over
-        // blocks of particles without a branch (it vectorises), and only a block with a
-        // particle that may be inside is looked at one particle at a time.
-        constexpr std::size_t block = 8;
-        for (std::size_t first = 0; first < count; first += block) {
-            const std::size_t last = std::min(first + block, count);
-            const unsigned maybe = maybe_inside(collider, &positions->x, first, last);
-            if (maybe == 0) continue;
-            for (std::size_t p = first; p < last; ++p) {
-                if (!(maybe >> (p - first) & 1u) || cloth.is_pinned(p)) continue;
-                Vec3 n;
-                const double distance = signed_distance(collider, positions[p], n);
-                if (distance >= 0.0) continue;
-                ++moved;
-                positions[p] -= distance * n;  // onto the surface
-                respond(collider, velocities[p], n);
+    // Most of the sheet, most of the time, is clear of the solid: the test runs over blocks
+    // of particles without a branch (it vectorises), and only a block with a particle that
+    // may be inside is looked at one particle at a time.
+    constexpr std::size_t block = 8;
+    std::atomic<std::size_t> moved{0};
+    parallel_for_if(
+        pool, count >= min_particles_for_threads, (count + block - 1) / block,
+        [&](std::size_t first_block, std::size_t last_block) {
+            std::size_t moved_here = 0;
+            for (std::size_t first = first_block * block; first < last_block * block;
+                 first += block) {
+                const std::size_t last = std::min(first + block, count);
+                for (const Collider& collider : colliders) {
+                    if (collider.response != ContactResponse::impulse) continue;
+                    const unsigned maybe = maybe_inside(collider, &positions->x, first, last);
+                    if (maybe == 0) continue;
+                    for (std::size_t p = first; p < last; ++p) {
+                        if (!(maybe >> (p - first) & 1u) || cloth.is_pinned(p)) continue;
+                        Vec3 n;
+                        const double distance = signed_distance(collider, positions[p], n);
+                        if (distance >= 0.0) continue;
+                        ++moved_here;
+                        positions[p] -= distance * n;  // onto the surface
+                        respond(collider, velocities[p], n);
+                    }
+                }
             }
-        }
-    }
-    return moved;
+            moved.fetch_add(moved_here, std::memory_order_relaxed);
+        });
+    return moved.load(std::memory_order_relaxed);
 }
 
 }  // namespace
 
-std::size_t resolve_impulse_contacts(std::span<const Collider> colliders, Cloth& cloth) {
+std::size_t resolve_impulse_contacts(std::span<const Collider> colliders, Cloth& cloth,
+                                     WorkerPool* pool) {
     return move_onto_impulse_colliders(
-        colliders, cloth, [](const Collider& collider, Vec3& v, const Vec3& n) {
+        colliders, cloth, pool, [](const Collider& collider, Vec3& v, const Vec3& n) {
             const double normal_speed = glm::dot(v, n);
             if (normal_speed >= 0.0) return;  // already leaving
             const Vec3 tangential = v - normal_speed * n;
@@ -149,10 +166,11 @@ std::size_t resolve_impulse_contacts(std::span<const Collider> colliders, Cloth&
         });
 }
 
-std::size_t push_out_of_impulse_colliders(std::span<const Collider> colliders, Cloth& cloth) {
+std::size_t push_out_of_impulse_colliders(std::span<const Collider> colliders, Cloth& cloth,
+                                          WorkerPool* pool) {
     // Only the velocity into the solid goes: restitution and friction were applied once, by
     // resolve_impulse_contacts.
-    return move_onto_impulse_colliders(colliders, cloth,
+    return move_onto_impulse_colliders(colliders, cloth, pool,
                                        [](const Collider&, Vec3& v, const Vec3& n) {
                                            const double normal_speed = glm::dot(v, n);
                                            if (normal_speed < 0.0) v -= normal_speed * n;

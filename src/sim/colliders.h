@@ -15,6 +15,7 @@
 #include <span>
 #include <vector>
 
+#include "parallel/worker_pool.h"
 #include "sim/cloth.h"
 #include "sim/scene.h"
 
@@ -48,13 +49,16 @@ void accumulate_repulsion_forces(std::span<const Collider> colliders, const Clot
                                  std::span<Vec3> forces);
 
 // Resolves impulse contacts on the cloth's current state; returns the number of contacts.
-std::size_t resolve_impulse_contacts(std::span<const Collider> colliders, Cloth& cloth);
+// Split between the pool's threads on large sheets; the same bits for any thread count.
+std::size_t resolve_impulse_contacts(std::span<const Collider> colliders, Cloth& cloth,
+                                     WorkerPool* pool = nullptr);
 
 // Moves particles found inside an impulse collider back onto its surface and removes their
 // velocity into it, without friction or restitution: for passes that run after the contacts
 // (self-collision) and may push a particle back into a solid. The contact's impulse was
 // applied once already this step; this only keeps the solid impenetrable. Returns the
 // particles moved.
-std::size_t push_out_of_impulse_colliders(std::span<const Collider> colliders, Cloth& cloth);
+std::size_t push_out_of_impulse_colliders(std::span<const Collider> colliders, Cloth& cloth,
+                                          WorkerPool* pool = nullptr);
 
 }  // namespace weft

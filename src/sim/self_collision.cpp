@@ -6,6 +6,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
+#include <optional>
 
 namespace weft {
 
@@ -33,8 +34,9 @@ constexpr std::array<std::array<int, 3>, 13> cells_ahead = {{{1, -1, -1},
 // How the particles moved from `from` to `to`: the box holding every displacement, the
 // largest displacement, and whether all are finite.
 struct Moves {
-    Vec3 low{0.0}, high{0.0};      // m, per component
-    double largest_squared = 0.0;  // m²
+    Vec3 low{std::numeric_limits<double>::infinity()};    // m, per component
+    Vec3 high{-std::numeric_limits<double>::infinity()};  // m, per component
+    double largest_squared = 0.0;                         // m²
     bool finite = true;
     double half_width_squared() const {  // m²: |h|², h the box's half-widths
         const Vec3 half_width = 0.5 * (high - low);
@@ -44,14 +46,13 @@ struct Moves {
 
 // One pass, no branch, every running value in a register of its own: a serial loop with an
 // early exit took 10 µs over the 64² drape (a thread hand-off costs more than that).
-Moves measure_moves(std::span<const Vec3> to, std::span<const Vec3> from) {
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    double low_x = inf, low_y = inf, low_z = inf, high_x = -inf, high_y = -inf, high_z = -inf;
-    double largest = 0.0;  // m²
-    unsigned non_finite = 0;
-    const Vec3* x = to.data();
-    const Vec3* x0 = from.data();
-    for (std::size_t p = 0; p < to.size(); ++p) {
+void measure_moves(const Vec3* x, const Vec3* x0, std::size_t begin, std::size_t end,
+                   Moves& moves) {
+    double low_x = moves.low.x, low_y = moves.low.y, low_z = moves.low.z;
+    double high_x = moves.high.x, high_y = moves.high.y, high_z = moves.high.z;
+    double largest = moves.largest_squared;  // m²
+    unsigned non_finite = moves.finite ? 0u : 1u;
+    for (std::size_t p = begin; p < end; ++p) {
         const double dx = x[p].x - x0[p].x, dy = x[p].y - x0[p].y, dz = x[p].z - x0[p].z;  // m
         low_x = dx < low_x ? dx : low_x;
         low_y = dy < low_y ? dy : low_y;
@@ -65,12 +66,55 @@ Moves measure_moves(std::span<const Vec3> to, std::span<const Vec3> from) {
         // overflowed.
         non_finite |= squared - squared == 0.0 ? 0u : 1u;
     }
-    Moves moves;
     moves.low = Vec3(low_x, low_y, low_z);
     moves.high = Vec3(high_x, high_y, high_z);
     moves.largest_squared = largest;
     moves.finite = non_finite == 0;
-    return moves;
+}
+
+// The moves from each of `from` (each as long as `to`) to `to`, in one pass over the
+// particles split between the pool's threads. Minima, maxima and an "any" are exact whatever
+// the order they are taken in, so the split never shows in the result.
+template <std::size_t N>
+std::array<Moves, N> measure_moves(std::span<const Vec3> to,
+                                   const std::array<std::span<const Vec3>, N>& from,
+                                   WorkerPool* pool) {
+    constexpr std::size_t chunks = 8;
+    std::array<std::array<Moves, N>, chunks> partial;
+    const std::size_t count = to.size();
+    parallel_for_if(pool, count >= min_particles_for_threads, chunks,
+                    [&](std::size_t first_chunk, std::size_t last_chunk) {
+                        for (std::size_t c = first_chunk; c < last_chunk; ++c)
+                            for (std::size_t r = 0; r < N; ++r)
+                                measure_moves(to.data(), from[r].data(), count * c / chunks,
+                                              count * (c + 1) / chunks, partial[c][r]);
+                    });
+    std::array<Moves, N> total;
+    for (std::size_t r = 0; r < N; ++r) {
+        Moves& moves = total[r];
+        for (const std::array<Moves, N>& chunk : partial) {
+            const Moves& part = chunk[r];
+            moves.low = glm::min(moves.low, part.low);
+            moves.high = glm::max(moves.high, part.high);
+            moves.largest_squared = std::max(moves.largest_squared, part.largest_squared);
+            moves.finite = moves.finite && part.finite;
+        }
+    }
+    return total;
+}
+
+// Whether the kept list may miss a pair, given the moves since it was built. A pair's
+// separation changes by the difference of its two displacements since the list was built,
+// Δb - Δa, and that difference is the same measured from any common motion T:
+// (Δb - T) - (Δa - T). Take T the middle of the box that holds every displacement, of
+// half-widths h: then |Δb - Δa| <= 2 |h|, and a pair closer than the thickness now was closer
+// than thickness + 2 |h| then. So the list holds while 2 |h| <= margin. A sheet falling or
+// sliding as a whole keeps its list; measuring each displacement from zero (|Δ| <= margin / 2
+// for all) rebuilt it every 40 steps of the drape's fall, at 1.4 ms a rebuild.
+bool outlived(const Moves& since_built, double margin) {
+    if (!since_built.finite) return true;
+    // 1e-6 spare: rounding in the displacements and the distances is parts in 1e16.
+    return !(since_built.half_width_squared() <= 0.25 * margin * margin * (1.0 - 1e-6));
 }
 
 }  // namespace
@@ -155,20 +199,9 @@ bool SelfCollision::joined(std::uint32_t a, std::uint32_t b) const {
     return false;
 }
 
-bool SelfCollision::moved_beyond_margin(const Cloth& cloth) const {
+bool SelfCollision::moved_beyond_margin(const Cloth& cloth, WorkerPool* pool) const {
     if (built_at_.size() != cloth.particle_count()) return true;
-    // A pair's separation changes by the difference of its two displacements since the list
-    // was built, Δb - Δa, and that difference is the same measured from any common motion T:
-    // (Δb - T) - (Δa - T). Take T the middle of the box that holds every displacement, of
-    // half-widths h: then |Δb - Δa| <= 2 |h|, and a pair closer than the thickness now was
-    // closer than thickness + 2 |h| then. So the list holds while 2 |h| <= margin. A sheet
-    // falling or sliding as a whole keeps its list; measuring each displacement from zero
-    // (|Δ| <= margin / 2 for all) rebuilt it every 40 steps of the drape's fall, at 1.4 ms
-    // a rebuild.
-    const Moves moves = measure_moves(cloth.positions, built_at_);
-    if (!moves.finite) return true;
-    // 1e-6 spare: rounding in the displacements and the distances is parts in 1e16.
-    return !(moves.half_width_squared() <= 0.25 * margin() * margin() * (1.0 - 1e-6));
+    return outlived(measure_moves<1>(cloth.positions, {built_at_}, pool)[0], margin());
 }
 
 void SelfCollision::rebuild_candidates(const Cloth& cloth, WorkerPool* pool) {
@@ -229,11 +262,18 @@ void SelfCollision::rebuild_candidates(const Cloth& cloth, WorkerPool* pool) {
 void SelfCollision::find_pairs(const Cloth& cloth,
                                std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs,
                                WorkerPool* pool) {
+    find_pairs(cloth, pairs, pool, std::nullopt);
+}
+
+void SelfCollision::find_pairs(const Cloth& cloth,
+                               std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs,
+                               WorkerPool* pool, std::optional<bool> list_outlived) {
     pairs.clear();
     if (cloth.particle_count() == 0) return;
     // Torn or cut springs: their ends may collide now.
     const bool springs_changed = refresh_joined_partners(cloth);
-    if (springs_changed || moved_beyond_margin(cloth)) rebuild_candidates(cloth, pool);
+    if (springs_changed || (list_outlived ? *list_outlived : moved_beyond_margin(cloth, pool)))
+        rebuild_candidates(cloth, pool);
     const double thickness_squared = thickness_ * thickness_;
     for (const auto& [a, b] : candidates_) {
         const Vec3 d = cloth.positions[b] - cloth.positions[a];
@@ -243,8 +283,19 @@ void SelfCollision::find_pairs(const Cloth& cloth,
 
 std::size_t SelfCollision::resolve(Cloth& cloth, std::span<const Collider> colliders,
                                    WorkerPool* pool, std::span<const Vec3> step_start) {
+    // Whether the kept list outlived its margin, when measured here with the step's moves
+    // (one pass over the particles for both).
+    std::optional<bool> list_outlived;
     if (step_start.size() == cloth.particle_count() && cloth.particle_count() > 0) {
-        const Moves moves = measure_moves(cloth.positions, step_start);
+        Moves moves;
+        if (built_at_.size() == cloth.particle_count()) {
+            const std::array<Moves, 2> both =
+                measure_moves<2>(cloth.positions, {step_start, built_at_}, pool);
+            moves = both[0];
+            list_outlived = outlived(both[1], margin());
+        } else {
+            moves = measure_moves<1>(cloth.positions, {step_start}, pool)[0];
+        }
         // A diverged step is the guard's to report, not swept here.
         const bool finite = moves.finite;
         const double largest_move_squared = moves.largest_squared;
@@ -258,16 +309,17 @@ std::size_t SelfCollision::resolve(Cloth& cloth, std::span<const Collider> colli
         if (finite && moves.half_width_squared() > 0.25 * thickness_ * thickness_) {
             // The list's positions are stale after this; the next plain pass rebuilds it.
             built_at_.clear();
-            return resolve_swept(cloth, colliders, step_start, std::sqrt(largest_move_squared));
+            return resolve_swept(cloth, colliders, step_start, std::sqrt(largest_move_squared),
+                                 pool);
         }
     }
     std::size_t first_pass_pairs = 0;
     for (int pass = 0; pass < max_passes; ++pass) {
-        find_pairs(cloth, pairs_, pool);
+        find_pairs(cloth, pairs_, pool, pass == 0 ? list_outlived : std::nullopt);
         if (pass == 0) first_pass_pairs = pairs_.size();
         if (pairs_.empty()) break;
         const double deepest = separate_pairs(cloth);
-        if (!colliders.empty()) push_out_of_impulse_colliders(colliders, cloth);
+        if (!colliders.empty()) push_out_of_impulse_colliders(colliders, cloth, pool);
         // Corrections this small (and the push out of a solid, which is no larger) cannot
         // have left an overlap worth another pass.
         if (deepest < settled_overlap * thickness_) break;

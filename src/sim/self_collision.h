@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -70,7 +71,8 @@ class SelfCollision {
     double separate_pairs(Cloth& cloth) const;
     // The swept pass (self_collision_swept.cpp).
     std::size_t resolve_swept(Cloth& cloth, std::span<const Collider> colliders,
-                              std::span<const Vec3> step_start, double largest_move);
+                              std::span<const Vec3> step_start, double largest_move,
+                              WorkerPool* pool);
     void find_swept_candidates(const Cloth& cloth, std::span<const Vec3> step_start,
                                double largest_move);
     // One swept Gauss–Seidel pass over swept_candidates_; the deepest correction (m).
@@ -89,7 +91,10 @@ class SelfCollision {
     double reach() const { return thickness_ + margin(); }  // m: the list's radius
     // True when two particles may have come closer by more than the margin since the list
     // was built (or the list does not fit the cloth, or a position is not finite).
-    bool moved_beyond_margin(const Cloth& cloth) const;
+    bool moved_beyond_margin(const Cloth& cloth, WorkerPool* pool) const;
+    // find_pairs, given whether the list outlived its margin when the caller measured it.
+    void find_pairs(const Cloth& cloth, std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs,
+                    WorkerPool* pool, std::optional<bool> list_outlived);
     void rebuild_candidates(const Cloth& cloth, WorkerPool* pool);
     void rebuild_hash(const Cloth& cloth, WorkerPool* pool);
     static constexpr std::size_t search_chunks = 16;  // fixed: the split never shows

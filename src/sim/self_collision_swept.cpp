@@ -27,7 +27,8 @@
 namespace weft {
 
 std::size_t SelfCollision::resolve_swept(Cloth& cloth, std::span<const Collider> colliders,
-                                         std::span<const Vec3> step_start, double largest_move) {
+                                         std::span<const Vec3> step_start, double largest_move,
+                                         WorkerPool* pool) {
     find_swept_candidates(cloth, step_start, largest_move);
     std::size_t first_pass_pairs = 0;
     for (int pass = 0; pass < max_passes; ++pass) {
@@ -35,7 +36,7 @@ std::size_t SelfCollision::resolve_swept(Cloth& cloth, std::span<const Collider>
         const double deepest = separate_swept_pairs(cloth, step_start, close_pairs);
         if (pass == 0) first_pass_pairs = close_pairs;
         if (close_pairs == 0) break;
-        if (!colliders.empty()) push_out_of_impulse_colliders(colliders, cloth);
+        if (!colliders.empty()) push_out_of_impulse_colliders(colliders, cloth, pool);
         if (deepest < settled_overlap * thickness_) break;
     }
     return first_pass_pairs;

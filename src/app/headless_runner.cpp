@@ -117,7 +117,7 @@ bool write_outputs(const CommandLine& command_line, std::ofstream& dump,
 // would otherwise take the ground out of the picture.
 float final_ground_height(const Simulation& simulation, float start_ground_height) {
     const Cloth& cloth = simulation.cloth();
-    const auto cloth_length = static_cast<float>(std::max(cloth.rows, cloth.cols) * cloth.spacing);
+    const auto cloth_length = static_cast<float>(cloth.rest_span());  // m
     return std::max(view::ground_height_below(cloth, simulation.colliders()),
                     start_ground_height - cloth_length);
 }

@@ -7,6 +7,7 @@
 // at anything else: springs and triangles refer to particles by index.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -74,6 +75,11 @@ struct Cloth {
     GridStencil grid_stencil;
 
     std::size_t particle_count() const { return positions.size(); }
+    // m: the rest shape's longest side: a grid's longer edge, a mesh's bounding-box diagonal.
+    // How far the cloth can reach from a point it hangs by, give or take.
+    double rest_span() const {
+        return mesh_extent > 0.0 ? mesh_extent : std::max(rows, cols) * spacing;
+    }
     std::size_t spring_count() const;
     bool is_pinned(std::size_t particle) const { return inverse_masses[particle] == 0.0; }
     const SpringGroup* find_group(SpringFamily family) const;

@@ -1,6 +1,7 @@
 #include "view/cloth_view.h"
 
 #include <algorithm>
+#include <cmath>
 #include <glm/geometric.hpp>
 
 #include "raster/strain_colour.h"
@@ -15,15 +16,57 @@ ClothView::ClothView(const Cloth& cloth) {
     uvs_.resize(count);
     // Texture coordinates: where the particle sits in the flat rest sheet, in metres, so a
     // pattern keeps its size whatever the resolution or layout.
-    for (std::size_t p = 0; p < count; ++p) {
+    if (cloth.mesh_extent > 0.0) {
+        set_mesh_uvs(cloth);
+    } else {
+        set_grid_uvs(cloth);
+    }
+    rebuild_topology(cloth);
+    update(cloth);
+}
+
+void ClothView::set_grid_uvs(const Cloth& cloth) {
+    for (std::size_t p = 0; p < uvs_.size(); ++p) {
         const auto row = static_cast<double>(p / cloth.cols),
                    col = static_cast<double>(p % cloth.cols);
         const double shift = (p / cloth.cols) % 2 ? cloth.odd_row_shift : 0.0;
         uvs_[p] = glm::vec2(static_cast<float>((col + shift) * cloth.spacing),
                             static_cast<float>(row * cloth.row_pitch * cloth.spacing));
     }
-    rebuild_topology(cloth);
-    update(cloth);
+}
+
+void ClothView::set_mesh_uvs(const Cloth& cloth) {
+    // A mesh has no rows; the view is made from the cloth as built, at rest. Along the axis
+    // its box is thinnest: a flat mesh (thinner than a quarter of its next side) is projected
+    // onto its plane; any other (a skirt, a tube) is unrolled around that axis, the angle
+    // times the mean distance from the axis against the height (one seam, where the angle
+    // wraps). In metres either way.
+    Vec3 low = cloth.positions.empty() ? Vec3(0.0) : cloth.positions.front(), high = low;
+    for (const Vec3& x : cloth.positions) {
+        low = glm::min(low, x);
+        high = glm::max(high, x);
+    }
+    const Vec3 size = high - low, centre = 0.5 * (low + high);  // m
+    int axis = 0;
+    for (int a = 1; a < 3; ++a)
+        if (size[a] < size[axis]) axis = a;
+    const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2;
+    const bool flat = size[axis] < 0.25 * std::min(size[u], size[v]);
+    double mean_radius = 0.0;  // m
+    for (const Vec3& x : cloth.positions)
+        mean_radius += std::hypot(x[u] - centre[u], x[v] - centre[v]);
+    mean_radius /= static_cast<double>(std::max<std::size_t>(cloth.positions.size(), 1));
+    for (std::size_t p = 0; p < uvs_.size(); ++p) {
+        const Vec3& x = cloth.positions[p];
+        if (flat) {
+            uvs_[p] =
+                glm::vec2(static_cast<float>(x[u] - low[u]), static_cast<float>(x[v] - low[v]));
+        } else {
+            const double angle = std::atan2(x[v] - centre[v], x[u] - centre[u]);  // rad
+            uvs_[p] = glm::vec2(static_cast<float>(angle * mean_radius),
+                                static_cast<float>(x[axis] - low[axis]));
+        }
+    }
 }
 
 void ClothView::rebuild_topology(const Cloth& cloth) {

@@ -49,6 +49,9 @@ class ClothView {
     std::vector<raster::PreparedMesh>& collider_meshes() { return collider_meshes_; }
 
   private:
+    // Texture coordinates, m: a grid's from its rows and columns, a mesh's from its shape.
+    void set_grid_uvs(const Cloth& cloth);
+    void set_mesh_uvs(const Cloth& cloth);
     void rebuild_topology(const Cloth& cloth);
 
     std::vector<glm::vec3> positions_;

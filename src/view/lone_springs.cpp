@@ -43,17 +43,42 @@ bool along_a_zigzag_side(const Cloth& cloth, const Spring& s) {
     return side && s.j % cols == col && (row_i > row_j ? row_i - row_j : row_j - row_i) == 2;
 }
 
+// A mesh's springs, by topology: its structural springs are triangle edges, and its bend
+// and shear springs join corners of faces that meet at an edge, so a spring stays with the
+// surface while a triangle at one end is, or touches, a triangle at the other. (A mesh's rest
+// shape may be curved, a skirt, where a bend spring's straight line leaves the plane of the
+// triangles at its ends, and no flat layout, such as its texture coordinates unrolled
+// around an axis with a seam, serves the grid's angle test everywhere.) A piece torn off
+// and hanging by the spring alone touches the rest nowhere: lone.
+bool held_by_triangles(const Spring& s, std::span<const raster::TriangleIndices> triangles,
+                       const raster::VertexTriangles& around) {
+    for (std::uint32_t a = around.offsets[s.i]; a < around.offsets[s.i + 1]; ++a) {
+        const raster::TriangleIndices& at_i = triangles[around.triangles[a]];
+        for (std::uint32_t b = around.offsets[s.j]; b < around.offsets[s.j + 1]; ++b) {
+            const raster::TriangleIndices& at_j = triangles[around.triangles[b]];
+            int shared = 0;
+            for (std::uint32_t u : at_i)
+                for (std::uint32_t v : at_j) shared += u == v ? 1 : 0;
+            if (shared >= 1) return true;
+        }
+    }
+    return false;
+}
+
 }  // namespace
 
 std::vector<raster::LineIndices> find_lone_springs(
     const Cloth& cloth, std::span<const glm::vec2> rest,
     std::span<const raster::TriangleIndices> triangles, const raster::VertexTriangles& around) {
     std::vector<raster::LineIndices> lone;
+    const bool mesh = cloth.mesh_extent > 0.0;
     for (const SpringGroup& group : cloth.spring_groups)
         for (const Spring& s : group.springs)
-            if ((!surface_along(s.i, s.j, rest, triangles, around) ||
-                 !surface_along(s.j, s.i, rest, triangles, around)) &&
-                !along_a_zigzag_side(cloth, s))
+            if (mesh) {
+                if (!held_by_triangles(s, triangles, around)) lone.push_back({s.i, s.j});
+            } else if ((!surface_along(s.i, s.j, rest, triangles, around) ||
+                        !surface_along(s.j, s.i, rest, triangles, around)) &&
+                       !along_a_zigzag_side(cloth, s))
                 lone.push_back({s.i, s.j});
     return lone;
 }

@@ -20,7 +20,9 @@ namespace weft::view {
 // diagonal that splits a cell, the triangles on either side of it; for the other diagonal,
 // the triangle the diagonal crosses; for a bend spring, those beside its first structural
 // edge. On a whole sheet no spring is lone (the offset layout's springs along its zig-zag
-// sides, which pass outside the whole sheet's surface, never are). `around` lists each particle's
+// sides, which pass outside the whole sheet's surface, never are). A mesh cloth's springs are
+// judged by topology instead: lone unless a triangle at one end is, or touches, a triangle
+// at the other (lone_springs.cpp). `around` lists each particle's
 // triangles among `triangles` (raster::find_vertex_triangles).
 std::vector<raster::LineIndices> find_lone_springs(
     const Cloth& cloth, std::span<const glm::vec2> rest,

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "sim/cloth_builder.h"
+#include "sim/scene_loader.h"
 #include "view/cloth_view.h"
 #include "view/frame_renderer.h"
 
@@ -28,6 +29,31 @@ TEST(LoneSprings, NoneOnAWholeSheet) {
             ASSERT_GT(cloth.spring_count(), 100u);
             EXPECT_TRUE(ClothView(cloth).lone_springs().empty());
         }
+}
+
+// The shipped meshes (a flat disc in triangles; a flag with a hole and a skirt in quads, the
+// skirt curved, where its bend springs leave the planes of its triangles): whole, no spring
+// is lone; a piece cut off but for one bend spring hangs by a lone one.
+TEST(LoneSprings, MeshesByTopology) {
+    for (const char* name : {"round_tablecloth", "flag_with_hole", "skirt"}) {
+        SceneLoadResult loaded =
+            load_scene_file(std::string(WEFT_SOURCE_DIR "/assets/scenes/") + name + ".toml");
+        ASSERT_TRUE(loaded.ok()) << loaded.error->message();
+        Cloth cloth = build_cloth(*loaded.scene);
+        ASSERT_GT(cloth.mesh_extent, 0.0);
+        EXPECT_TRUE(ClothView(cloth).lone_springs().empty()) << name;
+        // Every triangle at the far end of the first bend spring goes: the spring no longer
+        // touches the surface there.
+        const Spring bend = cloth.find_group(SpringFamily::bend)->springs.front();
+        std::erase_if(cloth.triangles, [&](const Triangle& t) {
+            return t.a == bend.j || t.b == bend.j || t.c == bend.j;
+        });
+        const ClothView cut(cloth);
+        EXPECT_TRUE(std::any_of(
+            cut.lone_springs().begin(), cut.lone_springs().end(),
+            [&](const raster::LineIndices& l) { return l[0] == bend.i && l[1] == bend.j; }))
+            << name;
+    }
 }
 
 // Removes the springs for which `cut` says true, and the triangles that used one as an edge.

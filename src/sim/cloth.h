@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -57,6 +58,9 @@ struct Cloth {
     // size, the diagonal of its rest shape's bounding box, m. 0 for the grid builders' cloths,
     // whose size follows from rows, cols and spacing.
     double mesh_extent = 0.0;
+    // A mesh cloth's vertices as built (origin applied), m: its rest shape, which a view lays
+    // its texture on. Shared by copies (snapshots, companions); null for the grid builders'.
+    std::shared_ptr<const std::vector<Vec3>> mesh_rest_shape;
 
     // Per-step state.
     std::vector<Vec3> positions;   // m

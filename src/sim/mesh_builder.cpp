@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <memory>
 #include <stdexcept>
 
 #include "sim/spring_coloring.h"
@@ -219,6 +220,7 @@ Cloth build_mesh_cloth(const Scene& scene) {
         high = glm::max(high, mesh.vertices[p]);
     }
     cloth.mesh_extent = glm::length(high - low);
+    cloth.mesh_rest_shape = std::make_shared<const std::vector<Vec3>>(cloth.positions);
     cloth.velocities.assign(count, Vec3(0.0));
     cloth.masses.resize(count);
     cloth.inverse_masses.resize(count);

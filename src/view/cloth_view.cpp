@@ -16,7 +16,7 @@ ClothView::ClothView(const Cloth& cloth) {
     uvs_.resize(count);
     // Texture coordinates: where the particle sits in the flat rest sheet, in metres, so a
     // pattern keeps its size whatever the resolution or layout.
-    if (cloth.mesh_extent > 0.0) {
+    if (cloth.mesh_rest_shape && cloth.mesh_rest_shape->size() == count) {
         set_mesh_uvs(cloth);
     } else {
         set_grid_uvs(cloth);
@@ -36,13 +36,14 @@ void ClothView::set_grid_uvs(const Cloth& cloth) {
 }
 
 void ClothView::set_mesh_uvs(const Cloth& cloth) {
-    // A mesh has no rows; the view is made from the cloth as built, at rest. Along the axis
+    // A mesh has no rows; its texture lies on its shape as built, at rest. Along the axis
     // its box is thinnest: a flat mesh (thinner than a quarter of its next side) is projected
     // onto its plane; any other (a skirt, a tube) is unrolled around that axis, the angle
     // times the mean distance from the axis against the height (one seam, where the angle
     // wraps). In metres either way.
-    Vec3 low = cloth.positions.empty() ? Vec3(0.0) : cloth.positions.front(), high = low;
-    for (const Vec3& x : cloth.positions) {
+    const std::vector<Vec3>& rest = *cloth.mesh_rest_shape;  // m
+    Vec3 low = rest.empty() ? Vec3(0.0) : rest.front(), high = low;
+    for (const Vec3& x : rest) {
         low = glm::min(low, x);
         high = glm::max(high, x);
     }
@@ -53,11 +54,10 @@ void ClothView::set_mesh_uvs(const Cloth& cloth) {
     const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2;
     const bool flat = size[axis] < 0.25 * std::min(size[u], size[v]);
     double mean_radius = 0.0;  // m
-    for (const Vec3& x : cloth.positions)
-        mean_radius += std::hypot(x[u] - centre[u], x[v] - centre[v]);
-    mean_radius /= static_cast<double>(std::max<std::size_t>(cloth.positions.size(), 1));
+    for (const Vec3& x : rest) mean_radius += std::hypot(x[u] - centre[u], x[v] - centre[v]);
+    mean_radius /= static_cast<double>(std::max<std::size_t>(rest.size(), 1));
     for (std::size_t p = 0; p < uvs_.size(); ++p) {
-        const Vec3& x = cloth.positions[p];
+        const Vec3& x = rest[p];
         if (flat) {
             uvs_[p] =
                 glm::vec2(static_cast<float>(x[u] - low[u]), static_cast<float>(x[v] - low[v]));

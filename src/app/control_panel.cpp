@@ -120,7 +120,16 @@ void materials(DemoState& state) {
         refusal_below(key + ".damping");
         ImGui::PopID();
     }
-    double mass_g = state.simulation.scene().cloth.particle_mass * 1e3;
+    const ClothSpec& cloth = state.simulation.scene().cloth;
+    if (!cloth.mesh.empty()) {
+        // A mesh's masses are lumped from its triangles' areas: its material has a density.
+        double density = cloth.density;  // kg/m²
+        if (slider_log("density (kg/m2)", density, 0.01, 100.0))
+            edit(state, "cloth.density", number(density));
+        refusal_below("cloth.density");
+        return;
+    }
+    double mass_g = cloth.particle_mass * 1e3;
     if (slider_log("particle mass (g)", mass_g, 0.1, 1000.0))
         edit(state, "cloth.particle_mass", number(mass_g * 1e-3));
     refusal_below("cloth.particle_mass");
@@ -350,7 +359,10 @@ bool draw_control_panel(DemoState& state, const ScreenRect& area) {
     statistics_section(state);
     if (ImGui::CollapsingHeader("solver", ImGuiTreeNodeFlags_DefaultOpen)) solver(state);
     if (ImGui::CollapsingHeader("materials", ImGuiTreeNodeFlags_DefaultOpen)) materials(state);
-    if (ImGui::CollapsingHeader("grid (rebuilt on apply)")) grid_section(state);
+    // A mesh's shape is its OBJ file's: there is no grid to rebuild.
+    if (state.simulation.scene().cloth.mesh.empty() &&
+        ImGui::CollapsingHeader("grid (rebuilt on apply)"))
+        grid_section(state);
     if (ImGui::CollapsingHeader("forces")) forces_section(state);
     if (ImGui::CollapsingHeader("tearing, limits, pins")) limits(state);
     if (ImGui::CollapsingHeader("colliders")) colliders_section(state);

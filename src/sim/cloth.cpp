@@ -14,6 +14,12 @@ const char* spring_family_name(SpringFamily family) {
     return "unknown";
 }
 
+std::string particle_name(const Cloth& cloth, std::size_t p) {
+    if (cloth.mesh_extent > 0.0) return "vertex " + std::to_string(p + 1);
+    const auto cols = static_cast<std::size_t>(std::max(cloth.cols, 1));
+    return "particle (row " + std::to_string(p / cols) + ", col " + std::to_string(p % cols) + ")";
+}
+
 std::size_t Cloth::spring_count() const {
     std::size_t count = 0;
     for (const SpringGroup& group : spring_groups) count += group.springs.size();

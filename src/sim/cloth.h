@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -23,6 +24,11 @@ using Vec3 = glm::dvec3;
 enum class SpringFamily : std::uint8_t { structural, shear, bend };
 
 const char* spring_family_name(SpringFamily family);
+
+struct Cloth;
+// How messages name particle p: "particle (row R, col C)" on a grid, "vertex N" on a mesh,
+// N counted from 1 as the OBJ file counts it.
+std::string particle_name(const Cloth& cloth, std::size_t p);
 
 struct Spring {
     std::uint32_t i;     // first particle

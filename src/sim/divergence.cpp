@@ -36,12 +36,6 @@ bool is_finite(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-std::string particle_name(const Cloth& cloth, std::size_t p) {
-    std::ostringstream out;
-    out << "particle (row " << p / cloth.cols << ", col " << p % cloth.cols << ")";
-    return out.str();
-}
-
 // Work below this many items stays on the calling thread.
 constexpr std::size_t min_items_for_threads = 8192;
 

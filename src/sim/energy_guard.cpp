@@ -70,14 +70,12 @@ std::optional<std::string> EnergyGuard::check(const Cloth& cloth, const ForceFie
             fastest = p;
         }
     }
-    const int cols = std::max(cloth.cols, 1);
     char message[320];
     std::snprintf(message, sizeof message,
                   "energy grew by %.3g J in %.3g s with nothing to supply it (the guard allows "
-                  "%.3g J: half of the sheet's weight times its size); fastest: particle (row "
-                  "%zu, col %zu) at %.3g m/s",
-                  gained, time - lowest_time_, allowed_gain * scale_, fastest / cols,
-                  fastest % cols, std::sqrt(fastest_speed_squared));
+                  "%.3g J: half of the sheet's weight times its size); fastest: %s at %.3g m/s",
+                  gained, time - lowest_time_, allowed_gain * scale_,
+                  particle_name(cloth, fastest).c_str(), std::sqrt(fastest_speed_squared));
     return std::string(message);
 }
 

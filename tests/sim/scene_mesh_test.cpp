@@ -5,9 +5,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 #include "sim/cloth_builder.h"
 #include "sim/colliders.h"
+#include "sim/divergence.h"
 #include "sim/obj_reader.h"
 #include "sim/scene_loader.h"
 #include "sim/scene_writer.h"
@@ -192,6 +194,18 @@ TEST(ShippedMeshes, HangAndDrapeWithoutSinkingIntoTheirColliders) {
             EXPECT_FALSE(cloth.pinned.empty()) << name;
         }
     }
+}
+
+// Messages name a mesh's particles as its OBJ file numbers its vertices.
+TEST(ShippedMeshes, MessagesNameVerticesByTheirNumberInTheFile) {
+    SceneLoadResult loaded = load_scene_file(WEFT_SOURCE_DIR "/assets/scenes/skirt.toml");
+    ASSERT_TRUE(loaded.ok()) << loaded.error->message();
+    Cloth cloth = build_cloth(*loaded.scene);
+    EXPECT_EQ(particle_name(cloth, 0), "vertex 1");
+    cloth.positions[4].x = std::numeric_limits<double>::quiet_NaN();
+    const std::optional<std::string> reason = find_divergence(cloth, true);
+    ASSERT_TRUE(reason.has_value());
+    EXPECT_EQ(reason->rfind("vertex 5 has a non-finite position", 0), 0u) << *reason;
 }
 
 }  // namespace

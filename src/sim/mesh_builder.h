@@ -3,9 +3,10 @@
 // how faces meet, so that a grid written as quads gets exactly the grid builder's springs.
 //
 // A mesh cloth is not a grid: it has no grid stencil (so the structured fast paths are not
-// used), its particles count as one row (rows = 1, cols = particle count: dumps and messages
-// say "row 0, col N-1" for vertex N), `spacing` is its mean structural rest length and
-// `mesh_extent` its size.
+// used), its particles count as one row (rows = 1, cols = particle count: dumps say "row 0,
+// col N-1" for vertex N; messages say "vertex N", particle_name in cloth.h), `spacing` is its
+// mean structural rest length, `mesh_extent` its size and `mesh_rest_shape` its vertices as
+// built.
 #pragma once
 
 #include <optional>

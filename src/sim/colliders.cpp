@@ -5,9 +5,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
+#include "sim/particle_pairs_sse2.h"
 
 namespace weft {
 namespace {
@@ -82,10 +80,10 @@ namespace {
 // Bit k of the result: whether particle first + k may be inside the collider, for the
 // particles [first, last) (at most 32). Exactly signed_distance's test for a plane, in its
 // operations; for a sphere a superset of it, off by a margin far above rounding (clearly
-// outside: no square root needed). No branch: two particles a round in SSE2 pairs of
-// doubles, their six coordinates (x0 y0) (z0 x1) (y1 z1), each lane doing the scalar
-// loop's operations in its order (so a plane's test stays exactly signed_distance's).
-unsigned maybe_inside(const Collider& collider, const double* x, std::size_t first,
+// outside: no square root needed). No branch: two particles a round in SSE2
+// (particle_pairs_sse2.h), each lane doing the scalar loop's operations in its order (so a
+// plane's test stays exactly signed_distance's).
+unsigned maybe_inside(const Collider& collider, const Vec3* x, std::size_t first,
                       std::size_t last) {
     unsigned maybe = 0;
     std::size_t p = first;
@@ -94,30 +92,11 @@ unsigned maybe_inside(const Collider& collider, const double* x, std::size_t fir
     const Vec3 n = collider.normal;
     const double clearly_outside_squared = collider.radius * collider.radius * (1.0 + 1e-9);
 #if defined(__SSE2__)
-    static_assert(sizeof(Vec3) == 3 * sizeof(double), "the particles' coordinates are one array");
-    const __m128d a_xy = _mm_set_pd(a.y, a.x), a_zx = _mm_set_pd(a.x, a.z);
-    const __m128d a_yz = _mm_set_pd(a.z, a.y);
-    const __m128d n_xy = _mm_set_pd(n.y, n.x), n_zx = _mm_set_pd(n.x, n.z);
-    const __m128d n_yz = _mm_set_pd(n.z, n.y);
+    const sse2::ParticlePair a_two = sse2::splat(a), n_two = sse2::splat(n);
     const __m128d outside = _mm_set1_pd(clearly_outside_squared);
     for (; p + 2 <= last; p += 2) {
-        const double* at = x + 3 * p;
-        __m128d d_xy = _mm_sub_pd(_mm_loadu_pd(at), a_xy);  // m
-        __m128d d_zx = _mm_sub_pd(_mm_loadu_pd(at + 2), a_zx);
-        __m128d d_yz = _mm_sub_pd(_mm_loadu_pd(at + 4), a_yz);
-        if (plane) {
-            d_xy = _mm_mul_pd(d_xy, n_xy);
-            d_zx = _mm_mul_pd(d_zx, n_zx);
-            d_yz = _mm_mul_pd(d_yz, n_yz);
-        } else {
-            d_xy = _mm_mul_pd(d_xy, d_xy);
-            d_zx = _mm_mul_pd(d_zx, d_zx);
-            d_yz = _mm_mul_pd(d_yz, d_yz);
-        }
-        const __m128d xx = _mm_move_sd(d_zx, d_xy);        // the two particles' x terms
-        const __m128d yy = _mm_shuffle_pd(d_xy, d_yz, 1);  // their y terms
-        const __m128d zz = _mm_shuffle_pd(d_zx, d_yz, 2);  // their z terms
-        const __m128d sum = _mm_add_pd(_mm_add_pd(xx, yy), zz);
+        const sse2::ParticlePair d = sse2::load_pair(x, p) - a_two;  // m
+        const __m128d sum = sse2::component_sums(plane ? d * n_two : d * d);
         // Plane: d < 0. Sphere: not (d² > r² (1 + 1e-9)), so a NaN counts as maybe inside.
         const __m128d inside =
             plane ? _mm_cmplt_pd(sum, _mm_setzero_pd()) : _mm_cmpngt_pd(sum, outside);
@@ -125,7 +104,7 @@ unsigned maybe_inside(const Collider& collider, const double* x, std::size_t fir
     }
 #endif
     for (; p < last; ++p) {
-        const double dx = x[3 * p] - a.x, dy = x[3 * p + 1] - a.y, dz = x[3 * p + 2] - a.z;
+        const double dx = x[p].x - a.x, dy = x[p].y - a.y, dz = x[p].z - a.z;
         const bool inside = plane ? dx * n.x + dy * n.y + dz * n.z < 0.0
                                   : !(dx * dx + dy * dy + dz * dz > clearly_outside_squared);
         maybe |= (inside ? 1u : 0u) << (p - first);
@@ -162,7 +141,7 @@ std::size_t move_onto_impulse_colliders(std::span<const Collider> colliders, Clo
                 const std::size_t last = std::min(first + block, count);
                 for (const Collider& collider : colliders) {
                     if (collider.response != ContactResponse::impulse) continue;
-                    const unsigned maybe = maybe_inside(collider, &positions->x, first, last);
+                    const unsigned maybe = maybe_inside(collider, positions, first, last);
                     if (maybe == 0) continue;
                     for (std::size_t p = first; p < last; ++p) {
                         if (!(maybe >> (p - first) & 1u) || cloth.is_pinned(p)) continue;

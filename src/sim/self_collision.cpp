@@ -8,9 +8,7 @@
 #include <limits>
 #include <optional>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
+#include "sim/particle_pairs_sse2.h"
 
 namespace weft {
 
@@ -58,50 +56,33 @@ void measure_moves(const Vec3* x, const Vec3* x0, std::size_t begin, std::size_t
     unsigned non_finite = moves.finite ? 0u : 1u;
     std::size_t p = begin;
 #if defined(__SSE2__)
-    static_assert(sizeof(Vec3) == 3 * sizeof(double), "the particles' coordinates are one array");
-    // Two particles a round, in pairs of doubles: their six coordinates are (x0 y0) (z0 x1)
-    // (y1 z1), so each lane of each pair always holds the same component, and the box is
-    // three pairs of minima and maxima. Each operation is the scalar loop's, lane by lane
-    // (min_pd(a, b) is a < b ? a : b; each square sums x² + y², then z²): the same bits,
-    // in half the instructions.
+    // Two particles a round (particle_pairs_sse2.h): the box is three pairs of minima and
+    // maxima. Each operation is the scalar loop's, lane by lane (min_pd(a, b) is
+    // a < b ? a : b; each square sums x² + y², then z²): the same bits, in half the
+    // instructions.
     if (end - p >= 2) {
-        __m128d low_xy = _mm_set_pd(low_y, low_x), low_zx = _mm_set_pd(low_x, low_z);
-        __m128d low_yz = _mm_set_pd(low_z, low_y);
-        __m128d high_xy = _mm_set_pd(high_y, high_x), high_zx = _mm_set_pd(high_x, high_z);
-        __m128d high_yz = _mm_set_pd(high_z, high_y);
+        sse2::ParticlePair low_two = sse2::splat(Vec3(low_x, low_y, low_z));
+        sse2::ParticlePair high_two = sse2::splat(Vec3(high_x, high_y, high_z));
         __m128d largest_two = _mm_set1_pd(largest);
         __m128d bad = _mm_setzero_pd();
         for (; p + 2 <= end; p += 2) {
-            const double* to = &x[p].x;
-            const double* from = &x0[p].x;
-            const __m128d d_xy = _mm_sub_pd(_mm_loadu_pd(to), _mm_loadu_pd(from));  // m
-            const __m128d d_zx = _mm_sub_pd(_mm_loadu_pd(to + 2), _mm_loadu_pd(from + 2));
-            const __m128d d_yz = _mm_sub_pd(_mm_loadu_pd(to + 4), _mm_loadu_pd(from + 4));
-            low_xy = _mm_min_pd(d_xy, low_xy);
-            low_zx = _mm_min_pd(d_zx, low_zx);
-            low_yz = _mm_min_pd(d_yz, low_yz);
-            high_xy = _mm_max_pd(d_xy, high_xy);
-            high_zx = _mm_max_pd(d_zx, high_zx);
-            high_yz = _mm_max_pd(d_yz, high_yz);
-            const __m128d s_xy = _mm_mul_pd(d_xy, d_xy), s_zx = _mm_mul_pd(d_zx, d_zx);
-            const __m128d s_yz = _mm_mul_pd(d_yz, d_yz);
-            const __m128d xx = _mm_move_sd(s_zx, s_xy);                  // (x0², x1²)
-            const __m128d yy = _mm_shuffle_pd(s_xy, s_yz, 1);            // (y0², y1²)
-            const __m128d zz = _mm_shuffle_pd(s_zx, s_yz, 2);            // (z0², z1²)
-            const __m128d squared = _mm_add_pd(_mm_add_pd(xx, yy), zz);  // m²
+            const sse2::ParticlePair d = sse2::load_pair(x, p) - sse2::load_pair(x0, p);  // m
+            low_two = {_mm_min_pd(d.xy, low_two.xy), _mm_min_pd(d.zx, low_two.zx),
+                       _mm_min_pd(d.yz, low_two.yz)};
+            high_two = {_mm_max_pd(d.xy, high_two.xy), _mm_max_pd(d.zx, high_two.zx),
+                        _mm_max_pd(d.yz, high_two.yz)};
+            const __m128d squared = sse2::component_sums(d * d);  // m²
             largest_two = _mm_max_pd(squared, largest_two);
             bad = _mm_or_pd(bad, _mm_cmpneq_pd(_mm_sub_pd(squared, squared), _mm_setzero_pd()));
         }
         // Minima and maxima of numbers (no NaN is ever taken into them) in any order.
-        auto lane = [](__m128d v, int i) {
-            return i == 0 ? _mm_cvtsd_f64(v) : _mm_cvtsd_f64(_mm_unpackhi_pd(v, v));
-        };
-        low_x = std::min(lane(low_xy, 0), lane(low_zx, 1));
-        low_y = std::min(lane(low_xy, 1), lane(low_yz, 0));
-        low_z = std::min(lane(low_zx, 0), lane(low_yz, 1));
-        high_x = std::max(lane(high_xy, 0), lane(high_zx, 1));
-        high_y = std::max(lane(high_xy, 1), lane(high_yz, 0));
-        high_z = std::max(lane(high_zx, 0), lane(high_yz, 1));
+        using sse2::lane;
+        low_x = std::min(lane(low_two.xy, 0), lane(low_two.zx, 1));
+        low_y = std::min(lane(low_two.xy, 1), lane(low_two.yz, 0));
+        low_z = std::min(lane(low_two.zx, 0), lane(low_two.yz, 1));
+        high_x = std::max(lane(high_two.xy, 0), lane(high_two.zx, 1));
+        high_y = std::max(lane(high_two.xy, 1), lane(high_two.yz, 0));
+        high_z = std::max(lane(high_two.zx, 0), lane(high_two.yz, 1));
         largest = std::max(lane(largest_two, 0), lane(largest_two, 1));
         non_finite |= _mm_movemask_pd(bad) != 0 ? 1u : 0u;
     }
@@ -126,8 +107,9 @@ void measure_moves(const Vec3* x, const Vec3* x0, std::size_t begin, std::size_t
     moves.finite = non_finite == 0;
 }
 
-// The moves from each of `from` (each as long as `to`) to `to`, in one pass over the
-// particles split between the pool's threads. Minima, maxima and an "any" are exact whatever
+// The moves from each of `from` (each as long as `to`) to `to`, in one hand-off to the
+// pool's threads: chunk by chunk, each chunk of `to` measured against every `from` while it
+// is in cache. Minima, maxima and an "any" are exact whatever
 // the order they are taken in, so the split never shows in the result.
 template <std::size_t N>
 std::array<Moves, N> measure_moves(std::span<const Vec3> to,
@@ -338,7 +320,7 @@ void SelfCollision::find_pairs(const Cloth& cloth,
 std::size_t SelfCollision::resolve(Cloth& cloth, std::span<const Collider> colliders,
                                    WorkerPool* pool, std::span<const Vec3> step_start) {
     // Whether the kept list outlived its margin, when measured here with the step's moves
-    // (one pass over the particles for both).
+    // (both in one hand-off to the threads).
     std::optional<bool> list_outlived;
     if (step_start.size() == cloth.particle_count() && cloth.particle_count() > 0) {
         Moves moves;

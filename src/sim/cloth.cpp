@@ -15,7 +15,7 @@ const char* spring_family_name(SpringFamily family) {
 }
 
 std::string particle_name(const Cloth& cloth, std::size_t p) {
-    if (cloth.mesh_extent > 0.0) return "vertex " + std::to_string(p + 1);
+    if (cloth.is_mesh()) return "vertex " + std::to_string(p + 1);
     const auto cols = static_cast<std::size_t>(std::max(cloth.cols, 1));
     return "particle (row " + std::to_string(p / cols) + ", col " + std::to_string(p % cols) + ")";
 }

@@ -85,11 +85,10 @@ struct Cloth {
     GridStencil grid_stencil;
 
     std::size_t particle_count() const { return positions.size(); }
+    bool is_mesh() const { return mesh_extent > 0.0; }  // built from a mesh (mesh_builder.h)
     // m: the rest shape's longest side: a grid's longer edge, a mesh's bounding-box diagonal.
     // How far the cloth can reach from a point it hangs by, give or take.
-    double rest_span() const {
-        return mesh_extent > 0.0 ? mesh_extent : std::max(rows, cols) * spacing;
-    }
+    double rest_span() const { return is_mesh() ? mesh_extent : std::max(rows, cols) * spacing; }
     std::size_t spring_count() const;
     bool is_pinned(std::size_t particle) const { return inverse_masses[particle] == 0.0; }
     const SpringGroup* find_group(SpringFamily family) const;

@@ -24,7 +24,7 @@ double energy_scale(const Cloth& cloth, const ForceField& field) {
     for (std::size_t p = 0; p < cloth.particle_count(); ++p)
         if (!cloth.is_pinned(p)) mass += cloth.masses[p];
     const double diagonal =
-        cloth.mesh_extent > 0.0
+        cloth.is_mesh()
             ? cloth.mesh_extent
             : cloth.spacing *
                   std::hypot(static_cast<double>(std::max(cloth.rows - 1, 0)) * cloth.row_pitch,

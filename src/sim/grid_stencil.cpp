@@ -29,7 +29,7 @@ void build_grid_stencil(Cloth& cloth) {
     stencil = GridStencil{};
     const std::size_t count = cloth.particle_count();
     // A mesh's one "row" could pass for a grid whose springs happen to join neighbours.
-    const bool plain_grid = cloth.mesh_extent == 0.0 && cloth.odd_row_shift == 0.0 &&
+    const bool plain_grid = !cloth.is_mesh() && cloth.odd_row_shift == 0.0 &&
                             cloth.row_pitch == 1.0 && cloth.rows >= 1 && cloth.cols >= 1 &&
                             static_cast<std::size_t>(cloth.rows) * cloth.cols == count;
     if (!plain_grid) return;

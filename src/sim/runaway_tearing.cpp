@@ -13,9 +13,8 @@ namespace {
 // A mesh (one "row" of particles) counts as a square sheet of as many particles.
 double springs_per_line(const Cloth& cloth, std::size_t springs) {
     const int across =
-        cloth.mesh_extent > 0.0
-            ? static_cast<int>(std::sqrt(static_cast<double>(cloth.particle_count())))
-            : std::min(cloth.rows, cloth.cols);
+        cloth.is_mesh() ? static_cast<int>(std::sqrt(static_cast<double>(cloth.particle_count())))
+                        : std::min(cloth.rows, cloth.cols);
     const int gaps = std::max(across - 1, 1);
     return static_cast<double>(springs) / gaps;
 }

@@ -85,7 +85,8 @@ StepReport Simulation::step() {
     // which gains energy: course_pinned.toml, held at the limit every step, vibrated at
     // 3 m/s rms (70 J of kinetic energy in a 15 kg sheet at rest) at any dt.
     if (integrator_ != Integrator::verlet) corrections += strain_corrections;
-    if (!colliders_.empty()) report.contacts += resolve_impulse_contacts(colliders_, cloth_, pool_.get());
+    if (!colliders_.empty())
+        report.contacts += resolve_impulse_contacts(colliders_, cloth_, pool_.get());
     // Self-collision goes after the contacts and keeps the particles out of the solids itself.
     if (self_collision_)
         report.contacts += self_collision_->resolve(cloth_, colliders_, pool_.get(), step_start_);

@@ -56,10 +56,8 @@ bool held_by_triangles(const Spring& s, std::span<const raster::TriangleIndices>
         const raster::TriangleIndices& at_i = triangles[around.triangles[a]];
         for (std::uint32_t b = around.offsets[s.j]; b < around.offsets[s.j + 1]; ++b) {
             const raster::TriangleIndices& at_j = triangles[around.triangles[b]];
-            int shared = 0;
             for (std::uint32_t u : at_i)
-                for (std::uint32_t v : at_j) shared += u == v ? 1 : 0;
-            if (shared >= 1) return true;
+                if (u == at_j[0] || u == at_j[1] || u == at_j[2]) return true;
         }
     }
     return false;
@@ -71,7 +69,7 @@ std::vector<raster::LineIndices> find_lone_springs(
     const Cloth& cloth, std::span<const glm::vec2> rest,
     std::span<const raster::TriangleIndices> triangles, const raster::VertexTriangles& around) {
     std::vector<raster::LineIndices> lone;
-    const bool mesh = cloth.mesh_extent > 0.0;
+    const bool mesh = cloth.is_mesh();
     for (const SpringGroup& group : cloth.spring_groups)
         for (const Spring& s : group.springs)
             if (mesh) {

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "sim/particle_pairs_sse2.h"
+#include "sim/sweep_watch.h"
 
 namespace weft {
 namespace {
@@ -123,7 +124,7 @@ constexpr std::size_t min_particles_for_threads = 4096;
 // result (and the count, a sum of integers) is the same for any split.
 template <class Respond>
 std::size_t move_onto_impulse_colliders(std::span<const Collider> colliders, Cloth& cloth,
-                                        WorkerPool* pool, Respond respond) {
+                                        WorkerPool* pool, SweepWatch* watch, Respond respond) {
     Vec3* positions = cloth.positions.data();
     Vec3* velocities = cloth.velocities.data();
     const std::size_t count = cloth.particle_count();
@@ -151,6 +152,7 @@ std::size_t move_onto_impulse_colliders(std::span<const Collider> colliders, Clo
                         ++moved_here;
                         positions[p] -= distance * n;  // onto the surface
                         respond(collider, velocities[p], n);
+                        if (watch) watch->check(p, positions[p], velocities[p]);
                     }
                 }
             }
@@ -162,9 +164,9 @@ std::size_t move_onto_impulse_colliders(std::span<const Collider> colliders, Clo
 }  // namespace
 
 std::size_t resolve_impulse_contacts(std::span<const Collider> colliders, Cloth& cloth,
-                                     WorkerPool* pool) {
+                                     WorkerPool* pool, SweepWatch* watch) {
     return move_onto_impulse_colliders(
-        colliders, cloth, pool, [](const Collider& collider, Vec3& v, const Vec3& n) {
+        colliders, cloth, pool, watch, [](const Collider& collider, Vec3& v, const Vec3& n) {
             const double normal_speed = glm::dot(v, n);
             if (normal_speed >= 0.0) return;  // already leaving
             const Vec3 tangential = v - normal_speed * n;
@@ -179,10 +181,10 @@ std::size_t resolve_impulse_contacts(std::span<const Collider> colliders, Cloth&
 }
 
 std::size_t push_out_of_impulse_colliders(std::span<const Collider> colliders, Cloth& cloth,
-                                          WorkerPool* pool) {
+                                          WorkerPool* pool, SweepWatch* watch) {
     // Only the velocity into the solid goes: restitution and friction were applied once, by
     // resolve_impulse_contacts.
-    return move_onto_impulse_colliders(colliders, cloth, pool,
+    return move_onto_impulse_colliders(colliders, cloth, pool, watch,
                                        [](const Collider&, Vec3& v, const Vec3& n) {
                                            const double normal_speed = glm::dot(v, n);
                                            if (normal_speed < 0.0) v -= normal_speed * n;

@@ -21,6 +21,8 @@
 
 namespace weft {
 
+class SweepWatch;  // sweep_watch.h
+
 struct Collider {
     ColliderType type = ColliderType::sphere;
     Vec3 center{0.0};            // m, sphere
@@ -50,8 +52,9 @@ void accumulate_repulsion_forces(std::span<const Collider> colliders, const Clot
 
 // Resolves impulse contacts on the cloth's current state; returns the number of contacts.
 // Split between the pool's threads on large sheets; the same bits for any thread count.
+// With a `watch`, each particle moved is checked for the divergence guard (sweep_watch.h).
 std::size_t resolve_impulse_contacts(std::span<const Collider> colliders, Cloth& cloth,
-                                     WorkerPool* pool = nullptr);
+                                     WorkerPool* pool = nullptr, SweepWatch* watch = nullptr);
 
 // Moves particles found inside an impulse collider back onto its surface and removes their
 // velocity into it, without friction or restitution: for passes that run after the contacts
@@ -59,6 +62,6 @@ std::size_t resolve_impulse_contacts(std::span<const Collider> colliders, Cloth&
 // applied once already this step; this only keeps the solid impenetrable. Returns the
 // particles moved.
 std::size_t push_out_of_impulse_colliders(std::span<const Collider> colliders, Cloth& cloth,
-                                          WorkerPool* pool = nullptr);
+                                          WorkerPool* pool = nullptr, SweepWatch* watch = nullptr);
 
 }  // namespace weft

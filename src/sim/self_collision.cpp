@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "sim/particle_pairs_sse2.h"
+#include "sim/sweep_watch.h"
 
 namespace weft {
 
@@ -318,7 +319,8 @@ void SelfCollision::find_pairs(const Cloth& cloth,
 }
 
 std::size_t SelfCollision::resolve(Cloth& cloth, std::span<const Collider> colliders,
-                                   WorkerPool* pool, std::span<const Vec3> step_start) {
+                                   WorkerPool* pool, std::span<const Vec3> step_start,
+                                   SweepWatch* watch) {
     // Whether the kept list outlived its margin, when measured here with the step's moves
     // (both in one hand-off to the threads).
     std::optional<bool> list_outlived;
@@ -346,7 +348,7 @@ std::size_t SelfCollision::resolve(Cloth& cloth, std::span<const Collider> colli
             // The list's positions are stale after this; the next plain pass rebuilds it.
             built_at_.clear();
             return resolve_swept(cloth, colliders, step_start, std::sqrt(largest_move_squared),
-                                 pool);
+                                 pool, watch);
         }
     }
     std::size_t first_pass_pairs = 0;
@@ -354,8 +356,8 @@ std::size_t SelfCollision::resolve(Cloth& cloth, std::span<const Collider> colli
         find_pairs(cloth, pairs_, pool, pass == 0 ? list_outlived : std::nullopt);
         if (pass == 0) first_pass_pairs = pairs_.size();
         if (pairs_.empty()) break;
-        const double deepest = separate_pairs(cloth);
-        if (!colliders.empty()) push_out_of_impulse_colliders(colliders, cloth, pool);
+        const double deepest = separate_pairs(cloth, watch);
+        if (!colliders.empty()) push_out_of_impulse_colliders(colliders, cloth, pool, watch);
         // Corrections this small (and the push out of a solid, which is no larger) cannot
         // have left an overlap worth another pass.
         if (deepest < settled_overlap * thickness_) break;
@@ -363,7 +365,7 @@ std::size_t SelfCollision::resolve(Cloth& cloth, std::span<const Collider> colli
     return first_pass_pairs;
 }
 
-double SelfCollision::separate_pairs(Cloth& cloth) const {
+double SelfCollision::separate_pairs(Cloth& cloth, SweepWatch* watch) const {
     double deepest = 0.0;
     for (const auto& [a, b] : pairs_) {
         const double wa = cloth.inverse_masses[a], wb = cloth.inverse_masses[b];
@@ -375,13 +377,13 @@ double SelfCollision::separate_pairs(Cloth& cloth) const {
         const Vec3 n = distance > 0.0 ? d / distance : Vec3(0.0, 1.0, 0.0);
         const double overlap = thickness_ - distance;
         deepest = std::max(deepest, overlap);
-        push_apart(cloth, a, b, n, overlap);
+        push_apart(cloth, a, b, n, overlap, watch);
     }
     return deepest;
 }
 
 void SelfCollision::push_apart(Cloth& cloth, std::uint32_t a, std::uint32_t b, const Vec3& n,
-                               double overlap) {
+                               double overlap, SweepWatch* watch) {
     const double wa = cloth.inverse_masses[a], wb = cloth.inverse_masses[b];
     const double share_a = wa / (wa + wb), share_b = wb / (wa + wb);
     cloth.positions[a] -= share_a * overlap * n;
@@ -391,6 +393,10 @@ void SelfCollision::push_apart(Cloth& cloth, std::uint32_t a, std::uint32_t b, c
     if (approach < 0.0) {
         cloth.velocities[a] += share_a * approach * n;
         cloth.velocities[b] -= share_b * approach * n;
+    }
+    if (watch) {
+        watch->check(a, cloth.positions[a], cloth.velocities[a]);
+        watch->check(b, cloth.positions[b], cloth.velocities[b]);
     }
 }
 

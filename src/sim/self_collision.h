@@ -61,27 +61,32 @@ class SelfCollision {
     // (self_collision_swept.cpp): candidates are the pairs whose straight paths over the
     // step pass near each other, and a pair that came within the thickness is put back
     // apart on the side it started from.
+    //
+    // With a `watch`, every particle the passes move is checked for the divergence guard
+    // (sweep_watch.h).
     std::size_t resolve(Cloth& cloth, std::span<const Collider> colliders = {},
-                        WorkerPool* pool = nullptr, std::span<const Vec3> step_start = {});
+                        WorkerPool* pool = nullptr, std::span<const Vec3> step_start = {},
+                        SweepWatch* watch = nullptr);
     static constexpr int max_passes = 8;
     static constexpr double settled_overlap = 1e-3;  // × thickness: a pass this deep is the last
 
   private:
     // One Gauss–Seidel pass over pairs_; returns the deepest overlap it corrected (m).
-    double separate_pairs(Cloth& cloth) const;
+    double separate_pairs(Cloth& cloth, SweepWatch* watch) const;
     // The swept pass (self_collision_swept.cpp).
     std::size_t resolve_swept(Cloth& cloth, std::span<const Collider> colliders,
                               std::span<const Vec3> step_start, double largest_move,
-                              WorkerPool* pool);
+                              WorkerPool* pool, SweepWatch* watch);
     void find_swept_candidates(const Cloth& cloth, std::span<const Vec3> step_start,
                                double largest_move);
     // One swept Gauss–Seidel pass over swept_candidates_; the deepest correction (m).
     double separate_swept_pairs(Cloth& cloth, std::span<const Vec3> step_start,
-                                std::size_t& close_pairs) const;
+                                std::size_t& close_pairs, SweepWatch* watch) const;
     // Moves b from a by `overlap` along n, shared by inverse mass (at least one is free),
-    // and takes the approaching part of their relative velocity along n.
+    // and takes the approaching part of their relative velocity along n; checks both for
+    // the `watch`, if any.
     static void push_apart(Cloth& cloth, std::uint32_t a, std::uint32_t b, const Vec3& n,
-                           double overlap);
+                           double overlap, SweepWatch* watch);
     // m: how far the list looks past the thickness. A wider margin lasts more steps but lists
     // more pairs: at 1.5 thicknesses the drapes' reach (2.5 × 0.75 spacing) stays inside
     // the nearest unjoined neighbours of a flat square grid (√5 spacings), which 2

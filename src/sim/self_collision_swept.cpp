@@ -23,20 +23,21 @@
 #include <glm/geometric.hpp>
 
 #include "sim/self_collision.h"
+#include "sim/sweep_watch.h"
 
 namespace weft {
 
 std::size_t SelfCollision::resolve_swept(Cloth& cloth, std::span<const Collider> colliders,
                                          std::span<const Vec3> step_start, double largest_move,
-                                         WorkerPool* pool) {
+                                         WorkerPool* pool, SweepWatch* watch) {
     find_swept_candidates(cloth, step_start, largest_move);
     std::size_t first_pass_pairs = 0;
     for (int pass = 0; pass < max_passes; ++pass) {
         std::size_t close_pairs = 0;
-        const double deepest = separate_swept_pairs(cloth, step_start, close_pairs);
+        const double deepest = separate_swept_pairs(cloth, step_start, close_pairs, watch);
         if (pass == 0) first_pass_pairs = close_pairs;
         if (close_pairs == 0) break;
-        if (!colliders.empty()) push_out_of_impulse_colliders(colliders, cloth, pool);
+        if (!colliders.empty()) push_out_of_impulse_colliders(colliders, cloth, pool, watch);
         if (deepest < settled_overlap * thickness_) break;
     }
     return first_pass_pairs;
@@ -132,7 +133,7 @@ void SelfCollision::find_swept_candidates(const Cloth& cloth, std::span<const Ve
 }
 
 double SelfCollision::separate_swept_pairs(Cloth& cloth, std::span<const Vec3> step_start,
-                                           std::size_t& close_pairs) const {
+                                           std::size_t& close_pairs, SweepWatch* watch) const {
     double deepest = 0.0;
     for (const auto& [a, b] : swept_candidates_) {
         if (cloth.inverse_masses[a] + cloth.inverse_masses[b] == 0.0) continue;
@@ -162,7 +163,7 @@ double SelfCollision::separate_swept_pairs(Cloth& cloth, std::span<const Vec3> s
         if (overlap <= 0.0) continue;
         ++close_pairs;
         deepest = std::max(deepest, overlap);
-        push_apart(cloth, a, b, n, overlap);
+        push_apart(cloth, a, b, n, overlap, watch);
     }
     return deepest;
 }

@@ -6,6 +6,7 @@
 #include "sim/cloth_builder.h"
 #include "sim/divergence.h"
 #include "sim/strain_limit.h"
+#include "sim/sweep_watch.h"
 #include "sim/tearing.h"
 
 namespace weft {
@@ -67,8 +68,19 @@ StepReport Simulation::step() {
     workspace_.sweep_request = divergence_guard_.sweep_request(cloth_, check_runaway_stretch);
     workspace_.sweep_result.reset();
     // Self-collision judges the step by where each particle went from (self_collision.h).
-    if (self_collision_) step_start_ = cloth_.positions;
-    step_function_(cloth_, field_, dt_, workspace_);
+    // The fused grid step leaves those positions in its output buffer; any other step is
+    // taken in place, so they are copied first.
+    std::span<const Vec3> step_start;
+    if (integrator_ == Integrator::symplectic_euler &&
+        step_symplectic_euler_fused(cloth_, field_, dt_, workspace_)) {
+        step_start = workspace_.next_positions;
+    } else {
+        if (self_collision_) {
+            step_start_ = cloth_.positions;
+            step_start = step_start_;
+        }
+        step_function_(cloth_, field_, dt_, workspace_);
+    }
     field_.drag = nullptr;
     field_.colliders = {};
     field_.solids = {};
@@ -85,11 +97,19 @@ StepReport Simulation::step() {
     // which gains energy: course_pinned.toml, held at the limit every step, vibrated at
     // 3 m/s rms (70 J of kinetic energy in a 15 kg sheet at rest) at any dt.
     if (integrator_ != Integrator::verlet) corrections += strain_corrections;
+    // The step's sweep for the guard stays valid through the contacts and self-collision if
+    // they check what they move (sweep_watch.h); the strain limiter moves too many particles
+    // for that, and after its corrections the guard sweeps again.
+    std::optional<SweepWatch> watch;
+    if (workspace_.sweep_request && workspace_.sweep_result && strain_corrections == 0)
+        watch.emplace(*workspace_.sweep_request, *workspace_.sweep_result);
+    SweepWatch* const watching = watch ? &*watch : nullptr;
     if (!colliders_.empty())
-        report.contacts += resolve_impulse_contacts(colliders_, cloth_, pool_.get());
+        report.contacts += resolve_impulse_contacts(colliders_, cloth_, pool_.get(), watching);
     // Self-collision goes after the contacts and keeps the particles out of the solids itself.
     if (self_collision_)
-        report.contacts += self_collision_->resolve(cloth_, colliders_, pool_.get(), step_start_);
+        report.contacts +=
+            self_collision_->resolve(cloth_, colliders_, pool_.get(), step_start, watching);
     corrections += report.contacts;
     time_ += dt_;
     ++steps_taken_;
@@ -101,10 +121,14 @@ StepReport Simulation::step() {
     if (report.springs_torn || corrections) workspace_.history_valid = false;
     // With tearing on, a runaway spring breaks instead of stretching without bound, so only
     // non-finite values count as divergence.
-    // A sweep done during the step stands only if nothing has moved a particle since.
-    report.divergence =
-        divergence_guard_.check(cloth_, check_runaway_stretch, pool_.get(),
-                                corrections == 0 ? workspace_.sweep_result : std::nullopt);
+    // A sweep done during the step stands if nothing has moved a particle since, or if what
+    // did checked the particles it moved.
+    std::optional<ParticleSweep> swept;
+    if (watch)
+        swept = watch->result();
+    else if (corrections == 0)
+        swept = workspace_.sweep_result;
+    report.divergence = divergence_guard_.check(cloth_, check_runaway_stretch, pool_.get(), swept);
     // With tearing on, an unstable step shreds the cloth rather than diverge (runaway_tearing.h).
     if (!report.divergence && scene_.tear_max_stretch)
         report.divergence = tearing_guard_.check(cloth_, torn_, time_, drag_);

@@ -115,6 +115,35 @@ TEST(DivergenceGuard, TheBoundedGuardSeesAStretchAfterALongQuietRun) {
     EXPECT_TRUE(guard.check(with_nan, false).has_value());
 }
 
+TEST(DivergenceGuard, ARunawayStretchMadeByAContactIsCaughtInTheStepThatMadeIt) {
+    // The fused step sweeps for the guard on its way; a contact that moves particles after
+    // it must check them itself (sweep_watch.h), or the guard, trusting the step's sweep,
+    // misses what the contact did. A ball is moved under a quiet sheet so that it takes
+    // in a patch: the patch is thrown onto the ball's surface, whose radius is 10 spacings,
+    // and springs across it become many rest lengths long.
+    Scene scene;
+    scene.cloth.rows = 16;
+    scene.cloth.cols = 16;
+    scene.solver = {Integrator::symplectic_euler, 2e-4};
+    ColliderSpec ball;
+    ball.center = {0.0, -100.0, 0.0};
+    ball.radius = 10.0 * scene.cloth.spacing;
+    scene.colliders = {ball};
+    Simulation simulation(scene);
+    ASSERT_TRUE(fused_grid_steps());
+    ASSERT_TRUE(testing::run_steps(simulation, 50));
+
+    Scene moved = simulation.scene();
+    const Vec3 particle = simulation.cloth().positions[8 * 16 + 8];
+    const Vec3 inside = particle - Vec3(0.3, 0.2, 0.4) * scene.cloth.spacing;
+    moved.colliders[0].center = {inside.x, inside.y, inside.z};
+    simulation.set_parameters(moved);
+    const StepReport report = simulation.step();
+    EXPECT_GT(report.contacts, 0u);
+    ASSERT_TRUE(report.divergence.has_value());
+    EXPECT_NE(report.divergence->find("rest length"), std::string::npos) << *report.divergence;
+}
+
 TEST(EnergyGuard, CatchesExplicitEulerOnTheSheetOnASphereByTheEnergyItGains) {
     // Explicit Euler on sheet_on_sphere.toml gains energy from 0.45 s (+45 J by 0.5 s, the
     // sheet's energy scale M (|g| L + ½ (1 m/s)²) being 109 J); no spring passes the runaway

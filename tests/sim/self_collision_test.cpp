@@ -4,11 +4,13 @@
 
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <random>
 
 #include "sim/cloth_builder.h"
 #include "sim/self_collision.h"
 #include "sim/simulation.h"
+#include "sim/sweep_watch.h"
 #include "sim/topology_edits.h"
 
 namespace weft {
@@ -249,6 +251,32 @@ TEST(SelfCollision, AFastLayerDoesNotPassThroughAStillOneInOneStep) {
         EXPECT_GT(both.velocities[p].y, -1.0) << "particle " << p;
     }
     for (std::size_t p = 0; p < half; ++p) EXPECT_EQ(both.positions[p], below.positions[p]);
+}
+
+TEST(SelfCollision, ItChecksThePairsItPushesForTheDivergenceGuard) {
+    // Two unjoined particles of a 4 x 4 sheet laid on each other: the pass pushes them
+    // apart by the thickness, and a watch whose limit is under that sees it (sweep_watch.h);
+    // one whose limit is over it, or one left out of the pass, sees nothing.
+    Scene scene;
+    scene.cloth.rows = 4;
+    scene.cloth.cols = 4;
+    const double thickness = 0.5 * scene.cloth.spacing;
+    Cloth cloth = build_grid_cloth(scene);
+    cloth.positions[15] = cloth.positions[0] + Vec3(0.0, 0.0, 0.1 * thickness);
+    const std::vector<Vec3> before = cloth.positions;
+    for (double limit : {0.2 * thickness, 2.0 * thickness}) {
+        Cloth overlapping = cloth;
+        SweepWatch watch(SweepRequest{before.data(), limit * limit}, ParticleSweep{});
+        SelfCollision pass(thickness);
+        ASSERT_EQ(pass.resolve(overlapping, {}, nullptr, {}, &watch), 1u);
+        EXPECT_EQ(watch.result().moved, limit < thickness) << "limit " << limit;
+        EXPECT_FALSE(watch.result().non_finite);
+    }
+    Cloth overlapping = cloth;
+    overlapping.velocities[15].x = std::numeric_limits<double>::infinity();
+    SweepWatch watch(SweepRequest{before.data(), 1.0}, ParticleSweep{});
+    SelfCollision(thickness).resolve(overlapping, {}, nullptr, {}, &watch);
+    EXPECT_TRUE(watch.result().non_finite);
 }
 
 }  // namespace

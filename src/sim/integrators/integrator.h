@@ -92,6 +92,12 @@ void step_explicit_euler(Cloth& cloth, const ForceField& field, double dt,
                          IntegratorWorkspace& work);
 void step_symplectic_euler(Cloth& cloth, const ForceField& field, double dt,
                            IntegratorWorkspace& work);
+// The same step when the fused grid pass can take it (grid_force_pass.h); false, touching
+// nothing, when it cannot. After a true, work.next_positions holds the positions the step
+// started from (the pass's output buffer, swapped with the cloth's): a caller that needs
+// them reads them there instead of copying them first.
+bool step_symplectic_euler_fused(Cloth& cloth, const ForceField& field, double dt,
+                                 IntegratorWorkspace& work);
 void step_verlet(Cloth& cloth, const ForceField& field, double dt, IntegratorWorkspace& work);
 void step_velocity_verlet(Cloth& cloth, const ForceField& field, double dt,
                           IntegratorWorkspace& work);

@@ -5,17 +5,22 @@
 
 namespace weft {
 
+bool step_symplectic_euler_fused(Cloth& cloth, const ForceField& field, double dt,
+                                 IntegratorWorkspace& work) {
+    ParticleSweep sweep;
+    if (!step_grid_symplectic_euler(cloth, field, dt, work.next_positions, work.next_velocities,
+                                    work.sweep_request ? &*work.sweep_request : nullptr, &sweep,
+                                    work.pool))
+        return false;
+    ++work.force_evaluations;
+    if (work.sweep_request) work.sweep_result = sweep;
+    return true;
+}
+
 void step_symplectic_euler(Cloth& cloth, const ForceField& field, double dt,
                            IntegratorWorkspace& work) {
     // A plain grid steps in the force pass itself (grid_force_pass.h): the same bits.
-    ParticleSweep sweep;
-    if (step_grid_symplectic_euler(cloth, field, dt, work.next_positions, work.next_velocities,
-                                   work.sweep_request ? &*work.sweep_request : nullptr, &sweep,
-                                   work.pool)) {
-        ++work.force_evaluations;
-        if (work.sweep_request) work.sweep_result = sweep;
-        return;
-    }
+    if (step_symplectic_euler_fused(cloth, field, dt, work)) return;
     evaluate_forces(cloth, field, cloth.positions, cloth.velocities, work);
     const std::size_t count = cloth.particle_count();
     Vec3* x = cloth.positions.data();

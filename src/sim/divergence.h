@@ -40,7 +40,7 @@ std::optional<std::string> find_divergence(const Cloth& cloth, bool check_runawa
 // H = min over springs of (ratio L - l_ref). With Δ = x - x_ref, a spring's length now is
 // l = |x_j - x_i| <= l_ref + |Δ_j| + |Δ_i| <= l_ref + 2 max|Δ|. While 2 max|Δ| < H (with a
 // margin far above rounding) no spring can have reached the runaway stretch and the spring
-// scan is skipped; otherwise it runs and x_ref, H are renewed. The sweep that finds max|Δ|
+// scan is skipped; otherwise it runs and x_ref, H are renewed. The sweep that bounds max|Δ|
 // also checks finiteness, vectorised and split between threads (grid_force_pass.h).
 // Removing springs (tearing, cuts) only raises H, so the bound survives it.
 class DivergenceGuard {

@@ -79,8 +79,9 @@ bool rows_maybe_overstretched_avx512(const Job& job, double ratio_squared, int r
                                      int row_end);
 
 // The divergence guard's particle sweep over interleaved arrays (x y z per particle):
-// whether a position or velocity is not finite, and whether some particle has moved from
-// its reference by |x - x_ref|² >= limit_squared.
+// whether a position or velocity is not finite, and whether some particle may have moved
+// from its reference by |x - x_ref|² >= limit_squared: every such particle is flagged, and
+// some that moved at least 1/√3 of that (each component is tested on its own).
 void sweep_particles_baseline(const double* x, const double* reference, const double* v,
                               std::size_t count, double limit_squared, bool& non_finite,
                               bool& moved);

@@ -27,8 +27,8 @@ class SweepWatch {
         : request_(request), non_finite_(swept.non_finite), moved_(swept.moved) {}
 
     // Checks particle p after a correction moved it to x with velocity v. Any thread.
-    // The test of grid_kernel::sweep_particles: |x - x_ref|² >= the limit, or a non-finite
-    // coordinate (of x - x_ref, or of v).
+    // The test grid_kernel::sweep_particles makes a superset of: |x - x_ref|² >= the limit,
+    // or a non-finite coordinate (of x - x_ref, or of v).
     void check(std::size_t p, const Vec3& x, const Vec3& v) {
         const Vec3 d = x - request_.reference_positions[p];
         const double moved_squared = d.x * d.x + d.y * d.y + d.z * d.z;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <limits>
 
 #include "loaded_cloth.h"
@@ -116,6 +117,43 @@ TEST(FusedGridStep, ItsSweepFindsWhatTheSeparateSweepFinds) {
     ParticleSweep found;
     fused_stepped(broken, windy_field(), &pool, &request, &found);
     EXPECT_TRUE(found.non_finite);
+}
+
+// The sweep tests each coordinate on its own (no shuffles): it must flag every particle
+// that moved the limit or more, in any direction, and none that moved under 1/√3 of it.
+TEST(FusedGridStep, ItsSweepFlagsEveryParticleThatMovedTheLimitAndNoneUnderAThirdOfIt) {
+    const double limit = 0.01;  // m
+    const SimdLevel before = simd_level();
+    for (SimdLevel level : {SimdLevel::baseline, SimdLevel::avx2, SimdLevel::avx512}) {
+        if (level > supported_simd_level()) continue;
+        set_simd_level(level);
+        int cases = 0;
+        for (int i = 0; i < 400; ++i) {
+            // Directions spread over the sphere, diagonals included (the hardest case: each
+            // component is limit / √3 at |d| = limit); lengths from 0.5 to 1.5 limits.
+            const double z = -1.0 + 2.0 * ((i * 37) % 101) / 100.0;
+            const double angle = 0.731 * i;
+            Vec3 direction(std::sqrt(1.0 - z * z) * std::cos(angle),
+                           std::sqrt(1.0 - z * z) * std::sin(angle), z);
+            if (i % 8 == 0) direction = glm::normalize(Vec3(1.0, i % 16 ? -1.0 : 1.0, 1.0));
+            const double length = limit * (0.5 + (i % 41) / 40.0);
+            // A row of 5 particles, the moved one among four that stay (any lane).
+            std::vector<Vec3> reference(5, Vec3(0.25, -0.5, 1.0));
+            std::vector<Vec3> positions = reference;
+            positions[i % 5] += length * direction;
+            const std::vector<Vec3> velocities(5, Vec3(0.1, -0.2, 0.3));
+            const ParticleSweep found =
+                sweep_particles(positions, reference, velocities, limit * limit, nullptr);
+            const Vec3 d = positions[i % 5] - reference[i % 5];
+            const double moved_squared = glm::dot(d, d);
+            if (moved_squared >= limit * limit) EXPECT_TRUE(found.moved) << i;
+            if (moved_squared < limit * limit / 3.0 * (1.0 - 1e-6)) EXPECT_FALSE(found.moved) << i;
+            EXPECT_FALSE(found.non_finite);
+            cases += moved_squared >= limit * limit ? 1 : 0;
+        }
+        EXPECT_GT(cases, 100) << simd_level_name(level);
+    }
+    set_simd_level(before);
 }
 
 // The drag handle and repulsion contacts are forces the pass does not compute: it declines

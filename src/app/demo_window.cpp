@@ -410,6 +410,15 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
     long long total_steps = 0;  // steps of the main run, to tell a step's cost in the window
     double last = now_seconds();
     double seconds_per_step = 0.0;
+    // A step's cost is that of the cloths it was measured on: after the panel's grid, the
+    // scene picker or side by side changes how many particles step, it is unknown again.
+    const auto particles_stepped = [&state] {
+        std::size_t particles = 0;
+        for (int run = 0; run < state.run_count(); ++run)
+            particles += state.run(run).cloth().particle_count();
+        return particles;
+    };
+    std::size_t measured_on = 0;
     bool running = true;
     while (running) {
         w.layout = layout_of(w);
@@ -426,6 +435,7 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
 
         // Step: as many fixed steps as keep simulated time with the clock, within budget;
         // while paused, none but the one N or the panel's step button asked for.
+        if (particles_stepped() != measured_on) seconds_per_step = 0.0;
         const StepClock::Plan plan = state.plan_frame(elapsed, seconds_per_step);
         const double sim_start = now_seconds();
         const int steps = state.step(plan.steps);
@@ -439,7 +449,10 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
                           Tone::problem);
             state.stop_replay();
         }
-        if (steps > 0) seconds_per_step = sim_seconds / steps;
+        if (steps > 0) {
+            seconds_per_step = sim_seconds / steps;
+            measured_on = particles_stepped();
+        }
         DemoStatistics& stats = state.statistics;
         stats.steps = steps;
         stats.behind = plan.behind;

@@ -10,7 +10,10 @@ StepClock::Plan StepClock::advance(double elapsed, double dt, double seconds_per
     // A frame longer than a quarter second (a window drag, a debugger) is not caught up.
     owed_ += std::min(std::max(elapsed, 0.0), 0.25);
     const auto wanted = static_cast<long long>(std::floor(owed_ / dt));
-    long long affordable = wanted;
+    // An unknown cost (the first frame, a cloth just rebuilt) buys one step, which measures
+    // it. Taking all that was owed instead stepped a quarter second of a 1024 x 1024 sheet
+    // in one frame: a 6 s freeze.
+    long long affordable = 1;
     if (seconds_per_step > 0.0)
         affordable = std::max<long long>(1, static_cast<long long>(budget_ / seconds_per_step));
     plan.steps = static_cast<int>(std::min({wanted, affordable, 100000LL}));

@@ -16,7 +16,7 @@ class StepClock {
     };
 
     // `elapsed` wall seconds passed since the last frame; `seconds_per_step` is the recent
-    // cost of one step (0 if unknown).
+    // cost of one step, or 0 if unknown: then the frame takes one step, to measure it.
     Plan advance(double elapsed, double dt, double seconds_per_step);
 
     void reset() { owed_ = 0.0; }

@@ -32,5 +32,15 @@ TEST(StepClock, ALongStallIsNotCaughtUp) {
     EXPECT_EQ(plan.steps, 250);                                     // a quarter second at most
 }
 
+TEST(StepClock, AnUnknownStepCostBuysOneStepToMeasureIt) {
+    // The window's first frame, or the first after the cloth was rebuilt larger: a quarter
+    // second is owed, but at an unmeasured cost it might be seconds of stepping.
+    StepClock clock;
+    const StepClock::Plan plan = clock.advance(0.25, 0.001, 0.0);
+    EXPECT_EQ(plan.steps, 1);
+    EXPECT_TRUE(plan.behind);
+    EXPECT_LT(clock.owed(), 0.001);
+}
+
 }  // namespace
 }  // namespace weft::app

@@ -1,5 +1,6 @@
 #include "app/grid_edit.h"
 
+#include "sim/scene_loader.h"
 #include "sim/scene_writer.h"
 
 namespace weft::app {
@@ -36,6 +37,20 @@ bool same_grid(const ClothSpec& a, const ClothSpec& b) {
 
 long long grid_particle_count(const ClothSpec& draft) {
     return static_cast<long long>(draft.rows) * static_cast<long long>(draft.cols);
+}
+
+std::optional<std::string> apply_grid(DemoState& state, const ClothSpec& draft) {
+    // Only a grid the loader would take is measured against the window's limit: -1000 rows
+    // by -1000 cols are refused for their sign, not for a million particles.
+    const long long particles = grid_particle_count(draft);
+    if (draft.rows >= 1 && draft.cols >= 1 && particles > max_window_grid_particles)
+        return "cloth.rows × cloth.cols = " + std::to_string(particles) +
+               " particles, more than the window's limit of " +
+               std::to_string(max_window_grid_particles) +
+               ", the most it steps and draws at a usable frame rate (a headless run takes up "
+               "to " +
+               std::to_string(max_particles) + ")";
+    return state.change(grid_overrides(draft));
 }
 
 }  // namespace weft::app

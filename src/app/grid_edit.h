@@ -4,9 +4,11 @@
 // tested.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "app/demo_state.h"
 #include "sim/scene.h"
 
 namespace weft::app {
@@ -23,10 +25,19 @@ bool same_grid(const ClothSpec& a, const ClothSpec& b);
 // Particles in the draft's grid, computed without overflow for any typed rows and cols.
 long long grid_particle_count(const ClothSpec& draft);
 
-// From this many particles up the panel warns before Apply: building and stepping such a
-// cloth stalls the window for seconds (measured: 1024 x 1024 builds in about 1 s, 2048 x
-// 2048 in about 10 s, on the 2-core machine this was written on). The loader refuses more
-// than max_particles.
-inline constexpr long long slow_grid_particles = 1'048'576;
+// The most particles the panel's grid editor builds: 512 x 512, four times the largest
+// shipped scene. The window steps at least once a frame and draws every triangle, so a
+// frame costs a step and a draw of the whole sheet. Measured on the default scene grown in
+// the window at 1280 x 720 (2 cores, Xvfb): 512 x 512 ran at 18.6 fps (5.7 ms a step, 12 ms
+// drawing, 314 MB), 724 x 724 at 11.8 fps (601 MB), 1024 x 1024 at 5.2 fps (40 ms a step,
+// 46 ms drawing, 1.2 GB), and a copy side by side doubles the stepping. Beyond the limit
+// Apply is refused before anything is built, so a zero too many cannot freeze the window.
+// Scene files and --set keep the loader's own limit (max_particles): a headless run may
+// step a larger sheet.
+inline constexpr long long max_window_grid_particles = 262'144;
+
+// Apply: the draft rebuilt as the running cloth, or why not (and nothing changed): a grid
+// over max_window_grid_particles, or one the scene loader refuses.
+std::optional<std::string> apply_grid(DemoState& state, const ClothSpec& draft);
 
 }  // namespace weft::app

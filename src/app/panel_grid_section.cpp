@@ -56,14 +56,14 @@ void grid_section(DemoState& state) {
     pins_combo(draft);
     const long long particles = grid_particle_count(draft);
     ImGui::Text("%s", counted(particles, "particle", "particles").c_str());
-    if (particles >= slow_grid_particles && particles <= max_particles)
-        ImGui::TextColored(ImVec4(1, 0.6f, 0.2f, 1),
-                           "a cloth this large stalls the window for seconds while it is built, "
-                           "and steps slowly");
+    // Said before Apply, so the number typed is seen to be too many while it is typed.
+    if (particles > max_window_grid_particles)
+        ImGui::TextColored(ImVec4(1, 0.6f, 0.2f, 1), "more than the window's limit of %s",
+                           counted(max_window_grid_particles, "particle", "particles").c_str());
     const bool edited = !same_grid(draft, running);
     ImGui::BeginDisabled(!edited);
     if (ImGui::Button("apply (rebuilds the cloth)"))
-        answer_edit(grid_control, state.change(grid_overrides(draft)));
+        answer_edit(grid_control, apply_grid(state, draft));
     ImGui::SameLine();
     if (ImGui::Button("revert")) {
         draft = running;

@@ -131,6 +131,38 @@ TEST(PanelEdits, AHugeGridIsRefusedAtOnceWithTheLimit) {
     EXPECT_EQ(grid_particle_count(draft), 10'000'000'000LL);
 }
 
+TEST(PanelEdits, AGridTheWindowCannotStepIsRefusedAndTheSheetKept) {
+    DemoState state = demo();
+    state.step(20);
+    ClothSpec draft = state.simulation.scene().cloth;
+    draft.rows = 2048;
+    draft.cols = 2048;
+    ASSERT_LE(grid_particle_count(draft), max_particles);  // a scene file may have it
+    const std::size_t particles_before = state.simulation.cloth().particle_count();
+    const std::string why = refused(state, [&](DemoState& s) { return apply_grid(s, draft); });
+    EXPECT_EQ(state.simulation.cloth().particle_count(), particles_before);
+    EXPECT_NE(
+        why.find("more than the window's limit of " + std::to_string(max_window_grid_particles)),
+        std::string::npos)
+        << why;
+    EXPECT_EQ(why.find("\u00d7"), std::string::npos) << why;  // the font draws "x", not "×"
+    draft.rows = static_cast<int>(max_window_grid_particles) + 1;
+    draft.cols = 1;
+    refused(state, [&](DemoState& s) { return apply_grid(s, draft); });
+    // Signs the loader refuses are named as such, not multiplied into a count.
+    draft.rows = -1000;
+    draft.cols = -1000;
+    EXPECT_EQ(
+        refused(state, [&](DemoState& s) { return apply_grid(s, draft); }).find("window's limit"),
+        std::string::npos);
+    // Up to the limit the grid is built.
+    draft.rows = static_cast<int>(max_window_grid_particles);
+    draft.cols = 1;
+    ASSERT_FALSE(apply_grid(state, draft));
+    EXPECT_EQ(state.simulation.cloth().particle_count(),
+              static_cast<std::size_t>(max_window_grid_particles));
+}
+
 TEST(PanelEdits, ABadGridIsRefusedAndSaysWhy) {
     DemoState state = demo();
     ClothSpec draft = state.simulation.scene().cloth;

@@ -26,8 +26,8 @@ void statistics_section(DemoState& state) {
     const Cloth& cloth = state.simulation.cloth();
     ImGui::Text("%.0f fps   sim %.2f ms   raster %.2f ms", ImGui::GetIO().Framerate,
                 s.sim_seconds * 1e3, s.raster_seconds * 1e3);
-    ImGui::Text("%d steps/frame   t = %.2f s%s", s.steps, state.simulation.time(),
-                state.paused ? "   (paused)" : "");
+    ImGui::Text("%s a frame   t = %.2f s%s", counted(s.steps, "step", "steps").c_str(),
+                state.simulation.time(), state.paused ? "   (paused)" : "");
     ImGui::Text(
         "%s, %s, %s",
         counted(static_cast<long long>(cloth.particle_count()), "particle", "particles").c_str(),

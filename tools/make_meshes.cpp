@@ -163,9 +163,25 @@ constexpr Mesh meshes[] = {{"round_tablecloth.obj", round_tablecloth},
 }  // namespace
 
 int main(int argc, char** argv) {
+    const char* usage =
+        "usage: weft-make-meshes [--check] DIRECTORY\n"
+        "       weft-make-meshes --help | --version\n"
+        "\n"
+        "Writes the shipped meshes (skirt.obj, flag_with_hole.obj, round_tablecloth.obj) into\n"
+        "DIRECTORY; --check only compares them with the files there (status 1 if they differ).\n";
+    // Every program answers --help and --version (issue 18), this one too.
+    const std::string first = argc == 2 ? argv[1] : "";
+    if (first == "--help" || first == "-h") {
+        std::cout << usage;
+        return 0;
+    }
+    if (first == "--version") {
+        std::cout << "weft-make-meshes " << WEFT_VERSION << "\n";
+        return 0;
+    }
     const bool check = argc == 3 && std::string(argv[1]) == "--check";
     if (!(argc == 2 && argv[1][0] != '-') && !check) {
-        std::cerr << "usage: weft-make-meshes [--check] DIRECTORY\n";
+        std::cerr << usage;
         return 2;
     }
     const std::string directory = argv[argc - 1];

@@ -116,68 +116,87 @@ unsigned maybe_inside(const Collider& collider, const Vec3* x, std::size_t first
 // Work below this many particles stays on the calling thread (the hand-off costs more).
 constexpr std::size_t min_particles_for_threads = 4096;
 
-// Moves every free particle found inside an impulse collider onto its surface, then hands it
-// to `respond(collider, velocity, outward_normal)`; returns how many there were.
-//
-// Each particle meets the colliders in their order and nothing else: particles are
-// independent, so the blocks are split between the pool's threads, and each particle's
-// result (and the count, a sum of integers) is the same for any split.
+// Moves every free particle of [begin, end) found inside an impulse collider onto its
+// surface, then hands it to `respond(collider, velocity, outward_normal)`; returns how many
+// there were. Each particle meets the colliders in their order and nothing else, so
+// particles are independent: any split of the range gives the same result.
 template <class Respond>
-std::size_t move_onto_impulse_colliders(std::span<const Collider> colliders, Cloth& cloth,
-                                        WorkerPool* pool, SweepWatch* watch, Respond respond) {
-    Vec3* positions = cloth.positions.data();
-    Vec3* velocities = cloth.velocities.data();
-    const std::size_t count = cloth.particle_count();
+std::size_t move_onto_impulse_colliders(std::span<const Collider> colliders, Vec3* positions,
+                                        Vec3* velocities, const double* inverse_masses,
+                                        std::size_t begin, std::size_t end, SweepWatch* watch,
+                                        Respond respond) {
     // Most of the sheet, most of the time, is clear of the solid: the test runs over blocks
     // of particles without a branch (it vectorises), and only a block with a particle that
     // may be inside is looked at one particle at a time.
     constexpr std::size_t block = 32;
-    std::atomic<std::size_t> moved{0};
-    parallel_for_if(
-        pool, count >= min_particles_for_threads, (count + block - 1) / block,
-        [&](std::size_t first_block, std::size_t last_block) {
-            std::size_t moved_here = 0;
-            for (std::size_t first = first_block * block; first < last_block * block;
-                 first += block) {
-                const std::size_t last = std::min(first + block, count);
-                for (const Collider& collider : colliders) {
-                    if (collider.response != ContactResponse::impulse) continue;
-                    const unsigned maybe = maybe_inside(collider, positions, first, last);
-                    if (maybe == 0) continue;
-                    for (std::size_t p = first; p < last; ++p) {
-                        if (!(maybe >> (p - first) & 1u) || cloth.is_pinned(p)) continue;
-                        Vec3 n;
-                        const double distance = signed_distance(collider, positions[p], n);
-                        if (distance >= 0.0) continue;
-                        ++moved_here;
-                        positions[p] -= distance * n;  // onto the surface
-                        respond(collider, velocities[p], n);
-                        if (watch) watch->check(p, positions[p], velocities[p]);
-                    }
-                }
+    std::size_t moved = 0;
+    for (std::size_t first = begin; first < end; first += block) {
+        const std::size_t last = std::min(first + block, end);
+        for (const Collider& collider : colliders) {
+            if (collider.response != ContactResponse::impulse) continue;
+            const unsigned maybe = maybe_inside(collider, positions, first, last);
+            if (maybe == 0) continue;
+            for (std::size_t p = first; p < last; ++p) {
+                if (!(maybe >> (p - first) & 1u) || inverse_masses[p] == 0.0) continue;  // pinned
+                Vec3 n;
+                const double distance = signed_distance(collider, positions[p], n);
+                if (distance >= 0.0) continue;
+                ++moved;
+                positions[p] -= distance * n;  // onto the surface
+                respond(collider, velocities[p], n);
+                if (watch) watch->check(p, positions[p], velocities[p]);
             }
-            moved.fetch_add(moved_here, std::memory_order_relaxed);
-        });
+        }
+    }
+    return moved;
+}
+
+// The same over the whole cloth, split between the pool's threads in blocks; the count is a
+// sum of integers, the same for any split.
+template <class Respond>
+std::size_t move_onto_impulse_colliders(std::span<const Collider> colliders, Cloth& cloth,
+                                        WorkerPool* pool, SweepWatch* watch, Respond respond) {
+    const std::size_t count = cloth.particle_count();
+    constexpr std::size_t block = 32;
+    std::atomic<std::size_t> moved{0};
+    parallel_for_if(pool, count >= min_particles_for_threads, (count + block - 1) / block,
+                    [&](std::size_t first_block, std::size_t last_block) {
+                        moved.fetch_add(
+                            move_onto_impulse_colliders(
+                                colliders, cloth.positions.data(), cloth.velocities.data(),
+                                cloth.inverse_masses.data(), first_block * block,
+                                std::min(last_block * block, count), watch, respond),
+                            std::memory_order_relaxed);
+                    });
     return moved.load(std::memory_order_relaxed);
+}
+
+// Restitution along the normal, Coulomb friction across it, for a particle moved onto a
+// collider's surface with velocity v.
+void respond_with_impulse(const Collider& collider, Vec3& v, const Vec3& n) {
+    const double normal_speed = glm::dot(v, n);
+    if (normal_speed >= 0.0) return;  // already leaving
+    const Vec3 tangential = v - normal_speed * n;
+    const double normal_change = -(1.0 + collider.restitution) * normal_speed;
+    const double sliding_speed = glm::length(tangential);
+    const double tangential_scale =
+        sliding_speed > 0.0 ? std::max(0.0, 1.0 - collider.friction * normal_change / sliding_speed)
+                            : 0.0;
+    v = -collider.restitution * normal_speed * n + tangential_scale * tangential;
 }
 
 }  // namespace
 
 std::size_t resolve_impulse_contacts(std::span<const Collider> colliders, Cloth& cloth,
                                      WorkerPool* pool, SweepWatch* watch) {
-    return move_onto_impulse_colliders(
-        colliders, cloth, pool, watch, [](const Collider& collider, Vec3& v, const Vec3& n) {
-            const double normal_speed = glm::dot(v, n);
-            if (normal_speed >= 0.0) return;  // already leaving
-            const Vec3 tangential = v - normal_speed * n;
-            const double normal_change = -(1.0 + collider.restitution) * normal_speed;
-            const double sliding_speed = glm::length(tangential);
-            const double tangential_scale =
-                sliding_speed > 0.0
-                    ? std::max(0.0, 1.0 - collider.friction * normal_change / sliding_speed)
-                    : 0.0;
-            v = -collider.restitution * normal_speed * n + tangential_scale * tangential;
-        });
+    return move_onto_impulse_colliders(colliders, cloth, pool, watch, respond_with_impulse);
+}
+
+std::size_t resolve_impulse_contacts(std::span<const Collider> colliders, Vec3* positions,
+                                     Vec3* velocities, const double* inverse_masses,
+                                     std::size_t begin, std::size_t end, SweepWatch* watch) {
+    return move_onto_impulse_colliders(colliders, positions, velocities, inverse_masses, begin, end,
+                                       watch, respond_with_impulse);
 }
 
 std::size_t push_out_of_impulse_colliders(std::span<const Collider> colliders, Cloth& cloth,

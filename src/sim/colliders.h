@@ -55,6 +55,13 @@ void accumulate_repulsion_forces(std::span<const Collider> colliders, const Clot
 // With a `watch`, each particle moved is checked for the divergence guard (sweep_watch.h).
 std::size_t resolve_impulse_contacts(std::span<const Collider> colliders, Cloth& cloth,
                                      WorkerPool* pool = nullptr, SweepWatch* watch = nullptr);
+// The same on the particles [begin, end) of a state held apart from a Cloth, on the calling
+// thread: for a caller that does it beside other work on those particles (Simulation::step,
+// on the rows the fused step has just written). Particles with inverse mass 0 stay.
+std::size_t resolve_impulse_contacts(std::span<const Collider> colliders, Vec3* positions,
+                                     Vec3* velocities, const double* inverse_masses,
+                                     std::size_t begin, std::size_t end,
+                                     SweepWatch* watch = nullptr);
 
 // Moves particles found inside an impulse collider back onto its surface and removes their
 // velocity into it, without friction or restitution: for passes that run after the contacts

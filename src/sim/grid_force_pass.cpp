@@ -69,18 +69,27 @@ bool use_threads(const Cloth& cloth, WorkerPool* pool) {
 }
 
 // The row kernel over all rows of `job`, split between the pool's threads when the cloth is
-// big enough; what the fused sweep found in any band (nothing unless the job asks for it).
+// big enough, each band followed by `after_rows` on its particles; what the fused sweep found
+// in any band (nothing unless the job asks for it).
 grid_kernel::SweepFlags run_force_rows(const Cloth& cloth, const grid_kernel::Job& job,
-                                       WorkerPool* pool) {
+                                       WorkerPool* pool,
+                                       const RowsSteppedWork* after_rows = nullptr) {
     const auto kernel = kernel_of(grid_kernel::force_rows_baseline, grid_kernel::force_rows_avx2,
                                   grid_kernel::force_rows_avx512);
-    if (!use_threads(cloth, pool)) return kernel(job, 0, job.rows, thread_scratch(job.cols));
+    const auto cols = static_cast<std::size_t>(job.cols);
+    if (!use_threads(cloth, pool)) {
+        const grid_kernel::SweepFlags flags = kernel(job, 0, job.rows, thread_scratch(job.cols));
+        if (after_rows)
+            after_rows->run(after_rows->context, 0, static_cast<std::size_t>(job.rows) * cols);
+        return flags;
+    }
     std::atomic<bool> non_finite{false}, moved{false};
     pool->parallel_for(static_cast<std::size_t>(job.rows), [&](std::size_t begin, std::size_t end) {
         const grid_kernel::SweepFlags band =
             kernel(job, static_cast<int>(begin), static_cast<int>(end), thread_scratch(job.cols));
         if (band.non_finite) non_finite.store(true, std::memory_order_relaxed);
         if (band.moved) moved.store(true, std::memory_order_relaxed);
+        if (after_rows) after_rows->run(after_rows->context, begin * cols, end * cols);
     });
     return {non_finite.load(), moved.load()};
 }
@@ -130,7 +139,8 @@ bool fused_grid_steps() {
 bool step_grid_symplectic_euler(Cloth& cloth, const ForceField& field, double dt,
                                 std::vector<Vec3>& next_positions,
                                 std::vector<Vec3>& next_velocities, const SweepRequest* sweep,
-                                ParticleSweep* sweep_result, WorkerPool* pool) {
+                                ParticleSweep* sweep_result, WorkerPool* pool,
+                                const RowsSteppedWork* after_rows) {
     if (!fused_grid_steps() || (field.drag && field.drag->active()) || !field.colliders.empty())
         return false;
     grid_kernel::Job job;
@@ -148,7 +158,7 @@ bool step_grid_symplectic_euler(Cloth& cloth, const ForceField& field, double dt
         job.reference_positions = &sweep->reference_positions->x;
         job.moved_limit_squared = sweep->limit_squared;
     }
-    const grid_kernel::SweepFlags flags = run_force_rows(cloth, job, pool);
+    const grid_kernel::SweepFlags flags = run_force_rows(cloth, job, pool, after_rows);
     cloth.positions.swap(next_positions);
     cloth.velocities.swap(next_velocities);
     if (sweep && sweep_result) *sweep_result = {flags.non_finite, flags.moved};

@@ -63,13 +63,24 @@ struct SweepRequest {
 // `sweep_result`. Returns false, touching nothing, when the pass cannot take the step: no
 // usable grid stencil, or a force the pass does not compute (the drag handle, repulsion).
 //
+// With `after_rows`, each thread then goes on with that work on the particles of the rows
+// it has just stepped, while they are in its cache: run(context, begin, end) over particles
+// [begin, end), each particle once, the ranges of different threads at the same time. The
+// new state is then in next_positions and next_velocities; the cloth's arrays still hold
+// the step's start.
+//
 // set_fused_grid_steps(false) turns the fusion off (tests and benchmarks compare the two).
+struct RowsSteppedWork {
+    void (*run)(void* context, std::size_t begin, std::size_t end) = nullptr;
+    void* context = nullptr;
+};
 void set_fused_grid_steps(bool enabled);
 bool fused_grid_steps();
 bool step_grid_symplectic_euler(Cloth& cloth, const ForceField& field, double dt,
                                 std::vector<Vec3>& next_positions,
                                 std::vector<Vec3>& next_velocities, const SweepRequest* sweep,
-                                ParticleSweep* sweep_result, WorkerPool* pool);
+                                ParticleSweep* sweep_result, WorkerPool* pool,
+                                const RowsSteppedWork* after_rows = nullptr);
 
 // The divergence guard's stretch test over the stencil: whether some live spring may be
 // longer than `ratio` rest lengths, by |d|² > ratio² (1 - 1e-9) L² — a superset of the exact

@@ -34,18 +34,7 @@ constexpr std::array<std::array<int, 3>, 13> cells_ahead = {{{1, -1, -1},
                                                              {0, 1, 1},
                                                              {0, 0, 1}}};
 
-// How the particles moved from `from` to `to`: the box holding every displacement, the
-// largest displacement, and whether all are finite.
-struct Moves {
-    Vec3 low{std::numeric_limits<double>::infinity()};    // m, per component
-    Vec3 high{-std::numeric_limits<double>::infinity()};  // m, per component
-    double largest_squared = 0.0;                         // m²
-    bool finite = true;
-    double half_width_squared() const {  // m²: |h|², h the box's half-widths
-        const Vec3 half_width = 0.5 * (high - low);
-        return glm::dot(half_width, half_width);
-    }
-};
+using Moves = SelfCollision::Moves;
 
 // One pass, no branch, every running value in a register of its own: a serial loop with an
 // early exit took 10 µs over the 64² drape (a thread hand-off costs more than that).
@@ -127,16 +116,8 @@ std::array<Moves, N> measure_moves(std::span<const Vec3> to,
                                               count * (c + 1) / chunks, partial[c][r]);
                     });
     std::array<Moves, N> total;
-    for (std::size_t r = 0; r < N; ++r) {
-        Moves& moves = total[r];
-        for (const std::array<Moves, N>& chunk : partial) {
-            const Moves& part = chunk[r];
-            moves.low = glm::min(moves.low, part.low);
-            moves.high = glm::max(moves.high, part.high);
-            moves.largest_squared = std::max(moves.largest_squared, part.largest_squared);
-            moves.finite = moves.finite && part.finite;
-        }
-    }
+    for (std::size_t r = 0; r < N; ++r)
+        for (const std::array<Moves, N>& chunk : partial) total[r].take_in(chunk[r]);
     return total;
 }
 
@@ -318,15 +299,40 @@ void SelfCollision::find_pairs(const Cloth& cloth,
     }
 }
 
+void SelfCollision::Moves::take_in(const Moves& part) {
+    // Minima, maxima and an "and" of numbers (no NaN is ever taken into them): exact in any
+    // order, so the split into parts never shows.
+    low = glm::min(low, part.low);
+    high = glm::max(high, part.high);
+    largest_squared = std::max(largest_squared, part.largest_squared);
+    finite = finite && part.finite;
+}
+
+void SelfCollision::measure_step_moves(const Vec3* positions, const Vec3* step_start,
+                                       std::size_t begin, std::size_t end,
+                                       MeasuredMoves& into) const {
+    Moves from_start, since_built;
+    measure_moves(positions, step_start, begin, end, from_start);
+    const bool list_fits = built_at_.size() == into.particle_count;
+    if (list_fits) measure_moves(positions, built_at_.data(), begin, end, since_built);
+    std::lock_guard lock(into.mutex);
+    into.from_start.take_in(from_start);
+    into.since_built.take_in(since_built);
+    into.list_fits = list_fits;
+}
+
 std::size_t SelfCollision::resolve(Cloth& cloth, std::span<const Collider> colliders,
                                    WorkerPool* pool, std::span<const Vec3> step_start,
-                                   SweepWatch* watch) {
+                                   SweepWatch* watch, const MeasuredMoves* measured) {
     // Whether the kept list outlived its margin, when measured here with the step's moves
-    // (both in one hand-off to the threads).
+    // (both in one hand-off to the threads), or by the caller on its way.
     std::optional<bool> list_outlived;
     if (step_start.size() == cloth.particle_count() && cloth.particle_count() > 0) {
         Moves moves;
-        if (built_at_.size() == cloth.particle_count()) {
+        if (measured) {
+            moves = measured->from_start;
+            if (measured->list_fits) list_outlived = outlived(measured->since_built, margin());
+        } else if (built_at_.size() == cloth.particle_count()) {
             const std::array<Moves, 2> both =
                 measure_moves<2>(cloth.positions, {step_start, built_at_}, pool);
             moves = both[0];

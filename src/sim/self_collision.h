@@ -15,6 +15,9 @@
 
 #include <array>
 #include <cstdint>
+#include <glm/geometric.hpp>
+#include <limits>
+#include <mutex>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -64,9 +67,40 @@ class SelfCollision {
     //
     // With a `watch`, every particle the passes move is checked for the divergence guard
     // (sweep_watch.h).
+    //
+    // `measured`: the step's moves, measured by the caller on its way (measure_step_moves below),
+    // so resolve does not measure them again.
+    struct MeasuredMoves;
     std::size_t resolve(Cloth& cloth, std::span<const Collider> colliders = {},
                         WorkerPool* pool = nullptr, std::span<const Vec3> step_start = {},
-                        SweepWatch* watch = nullptr);
+                        SweepWatch* watch = nullptr, const MeasuredMoves* measured = nullptr);
+
+    // How particles moved between two states: the box holding every displacement, the
+    // largest displacement, and whether all are finite.
+    struct Moves {
+        Vec3 low{std::numeric_limits<double>::infinity()};    // m, per component
+        Vec3 high{-std::numeric_limits<double>::infinity()};  // m, per component
+        double largest_squared = 0.0;                         // m²
+        bool finite = true;
+        double half_width_squared() const {  // m²: |h|², h the box's half-widths
+            const Vec3 half_width = 0.5 * (high - low);
+            return glm::dot(half_width, half_width);
+        }
+        void take_in(const Moves& part);  // the moves of both
+    };
+    // What resolve measures of a step, gathered from ranges of particles measured apart.
+    struct MeasuredMoves {
+        explicit MeasuredMoves(std::size_t particles) : particle_count(particles) {}
+        std::size_t particle_count;
+        Moves from_start;   // from the step's start
+        Moves since_built;  // from the positions the kept list was built at
+        bool list_fits = false;
+        std::mutex mutex;
+    };
+    // Measures particles [begin, end) for resolve: from the step's start and from the kept
+    // list's positions. Thread-safe; each particle once, after the contacts have moved it.
+    void measure_step_moves(const Vec3* positions, const Vec3* step_start, std::size_t begin,
+                            std::size_t end, MeasuredMoves& into) const;
     static constexpr int max_passes = 8;
     static constexpr double settled_overlap = 1e-3;  // × thickness: a pass this deep is the last
 

@@ -1,6 +1,7 @@
 #include "sim/simulation.h"
 
 #include <algorithm>
+#include <atomic>
 #include <stdexcept>
 
 #include "sim/cloth_builder.h"
@@ -15,6 +16,35 @@ namespace {
 Vec3 to_vec3(const Vec3d& v) {
     return {v[0], v[1], v[2]};
 }
+
+// The contacts and self-collision's measure of the step's moves, done on the rows the fused
+// step has just written by the thread that wrote them (grid_force_pass.h): one hand-off to
+// the threads instead of three, with the particles still in cache. The same bits as the
+// separate passes: a particle's contacts depend on it alone, and the measures are minima,
+// maxima and "and"s, exact in any order.
+struct OnSteppedRows {
+    std::span<const Collider> colliders;  // the impulse ones act
+    std::vector<Vec3>& positions;         // m: the new state, in the fused step's buffers
+    std::vector<Vec3>& velocities;        // m/s
+    const Cloth& cloth;                   // still at the step's start
+    SweepWatch* watch;
+    const SelfCollision* self_collision;  // none: nothing to measure
+    SelfCollision::MeasuredMoves& moves;
+    std::atomic<std::size_t> contacts{0};
+
+    static void run(void* context, std::size_t begin, std::size_t end) {
+        auto& work = *static_cast<OnSteppedRows*>(context);
+        if (!work.colliders.empty())
+            work.contacts.fetch_add(
+                resolve_impulse_contacts(work.colliders, work.positions.data(),
+                                         work.velocities.data(), work.cloth.inverse_masses.data(),
+                                         begin, end, work.watch),
+                std::memory_order_relaxed);
+        if (work.self_collision)
+            work.self_collision->measure_step_moves(
+                work.positions.data(), work.cloth.positions.data(), begin, end, work.moves);
+    }
+};
 
 }  // namespace
 
@@ -67,13 +97,30 @@ StepReport Simulation::step() {
     const bool check_runaway_stretch = !scene_.tear_max_stretch;
     workspace_.sweep_request = divergence_guard_.sweep_request(cloth_, check_runaway_stretch);
     workspace_.sweep_result.reset();
+    // The guard's sweep, kept through the corrections after the step (sweep_watch.h); what
+    // the step's own sweep found is added once it is done.
+    std::optional<SweepWatch> watch;
+    if (workspace_.sweep_request) watch.emplace(*workspace_.sweep_request);
+    // The contacts and self-collision's measure ride on the fused step's rows when nothing
+    // comes between them and the step (the strain limiter would).
+    const bool on_rows =
+        !scene_.strain_limit_max_stretch && (!colliders_.empty() || self_collision_);
+    SelfCollision::MeasuredMoves measured(cloth_.particle_count());
+    OnSteppedRows rows_work{
+        colliders_, workspace_.next_positions, workspace_.next_velocities,
+        cloth_,     watch ? &*watch : nullptr, self_collision_ ? &*self_collision_ : nullptr,
+        measured};
+    const RowsSteppedWork after_rows{OnSteppedRows::run, &rows_work};
+    bool corrected_on_rows = false;
     // Self-collision judges the step by where each particle went from (self_collision.h).
     // The fused grid step leaves those positions in its output buffer; any other step is
     // taken in place, so they are copied first.
     std::span<const Vec3> step_start;
     if (integrator_ == Integrator::symplectic_euler &&
-        step_symplectic_euler_fused(cloth_, field_, dt_, workspace_)) {
+        step_symplectic_euler_fused(cloth_, field_, dt_, workspace_,
+                                    on_rows ? &after_rows : nullptr)) {
         step_start = workspace_.next_positions;
+        corrected_on_rows = on_rows;
     } else {
         if (self_collision_) {
             step_start_ = cloth_.positions;
@@ -100,16 +147,20 @@ StepReport Simulation::step() {
     // The step's sweep for the guard stays valid through the contacts and self-collision if
     // they check what they move (sweep_watch.h); the strain limiter moves too many particles
     // for that, and after its corrections the guard sweeps again.
-    std::optional<SweepWatch> watch;
-    if (workspace_.sweep_request && workspace_.sweep_result && strain_corrections == 0)
-        watch.emplace(*workspace_.sweep_request, *workspace_.sweep_result);
-    SweepWatch* const watching = watch ? &*watch : nullptr;
-    if (!colliders_.empty())
+    SweepWatch* watching = nullptr;
+    if (watch && workspace_.sweep_result && strain_corrections == 0) {
+        watch->add(*workspace_.sweep_result);
+        watching = &*watch;
+    }
+    if (corrected_on_rows)
+        report.contacts += rows_work.contacts.load(std::memory_order_relaxed);
+    else if (!colliders_.empty())
         report.contacts += resolve_impulse_contacts(colliders_, cloth_, pool_.get(), watching);
     // Self-collision goes after the contacts and keeps the particles out of the solids itself.
     if (self_collision_)
         report.contacts +=
-            self_collision_->resolve(cloth_, colliders_, pool_.get(), step_start, watching);
+            self_collision_->resolve(cloth_, colliders_, pool_.get(), step_start, watching,
+                                     corrected_on_rows ? &measured : nullptr);
     corrections += report.contacts;
     time_ += dt_;
     ++steps_taken_;
@@ -124,8 +175,8 @@ StepReport Simulation::step() {
     // A sweep done during the step stands if nothing has moved a particle since, or if what
     // did checked the particles it moved.
     std::optional<ParticleSweep> swept;
-    if (watch)
-        swept = watch->result();
+    if (watching)
+        swept = watching->result();
     else if (corrections == 0)
         swept = workspace_.sweep_result;
     report.divergence = divergence_guard_.check(cloth_, check_runaway_stretch, pool_.get(), swept);

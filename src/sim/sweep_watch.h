@@ -22,9 +22,15 @@ namespace weft {
 
 class SweepWatch {
   public:
-    // `request`: what the step swept for; `swept`: what it found.
-    SweepWatch(const SweepRequest& request, const ParticleSweep& swept)
+    // `request`: what the step swept for; `swept`: what it found (add it later if the
+    // corrections start before the step's sweep is done).
+    explicit SweepWatch(const SweepRequest& request, const ParticleSweep& swept = {})
         : request_(request), non_finite_(swept.non_finite), moved_(swept.moved) {}
+
+    void add(const ParticleSweep& swept) {
+        if (swept.non_finite) non_finite_.store(true, std::memory_order_relaxed);
+        if (swept.moved) moved_.store(true, std::memory_order_relaxed);
+    }
 
     // Checks particle p after a correction moved it to x with velocity v. Any thread.
     // The test grid_kernel::sweep_particles makes a superset of: |x - x_ref|² >= the limit,

@@ -146,8 +146,12 @@ TEST(FusedGridStep, ItsSweepFlagsEveryParticleThatMovedTheLimitAndNoneUnderAThir
                 sweep_particles(positions, reference, velocities, limit * limit, nullptr);
             const Vec3 d = positions[i % 5] - reference[i % 5];
             const double moved_squared = glm::dot(d, d);
-            if (moved_squared >= limit * limit) EXPECT_TRUE(found.moved) << i;
-            if (moved_squared < limit * limit / 3.0 * (1.0 - 1e-6)) EXPECT_FALSE(found.moved) << i;
+            if (moved_squared >= limit * limit) {
+                EXPECT_TRUE(found.moved) << i;
+            }
+            if (moved_squared < limit * limit / 3.0 * (1.0 - 1e-6)) {
+                EXPECT_FALSE(found.moved) << i;
+            }
             EXPECT_FALSE(found.non_finite);
             cases += moved_squared >= limit * limit ? 1 : 0;
         }

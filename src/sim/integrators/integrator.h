@@ -95,9 +95,11 @@ void step_symplectic_euler(Cloth& cloth, const ForceField& field, double dt,
 // The same step when the fused grid pass can take it (grid_force_pass.h); false, touching
 // nothing, when it cannot. After a true, work.next_positions holds the positions the step
 // started from (the pass's output buffer, swapped with the cloth's): a caller that needs
-// them reads them there instead of copying them first.
+// them reads them there instead of copying them first. `after_rows`: work for each thread
+// on the rows it has just stepped (grid_force_pass.h).
 bool step_symplectic_euler_fused(Cloth& cloth, const ForceField& field, double dt,
-                                 IntegratorWorkspace& work);
+                                 IntegratorWorkspace& work,
+                                 const RowsSteppedWork* after_rows = nullptr);
 void step_verlet(Cloth& cloth, const ForceField& field, double dt, IntegratorWorkspace& work);
 void step_velocity_verlet(Cloth& cloth, const ForceField& field, double dt,
                           IntegratorWorkspace& work);

@@ -6,11 +6,11 @@
 namespace weft {
 
 bool step_symplectic_euler_fused(Cloth& cloth, const ForceField& field, double dt,
-                                 IntegratorWorkspace& work) {
+                                 IntegratorWorkspace& work, const RowsSteppedWork* after_rows) {
     ParticleSweep sweep;
     if (!step_grid_symplectic_euler(cloth, field, dt, work.next_positions, work.next_velocities,
                                     work.sweep_request ? &*work.sweep_request : nullptr, &sweep,
-                                    work.pool))
+                                    work.pool, after_rows))
         return false;
     ++work.force_evaluations;
     if (work.sweep_request) work.sweep_result = sweep;

@@ -334,9 +334,12 @@ bool draw_control_panel(DemoState& state, const ScreenRect& area) {
     // arrow folds it to a strip, and the view takes the window.
     ImGui::SetNextWindowPos(ImVec2(area.x, area.y), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(area.width, area.height), ImGuiCond_Always);
-    const bool open = ImGui::Begin(
-        "weft", nullptr,
-        ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings);
+    // No background: a blended rectangle the size of the panel, every frame, in SDL's software
+    // renderer; the window is cleared to the same colour under it (demo_window.cpp).
+    const bool open =
+        ImGui::Begin("weft", nullptr,
+                     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                         ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBackground);
     if (!open) {
         ImGui::End();
         return false;

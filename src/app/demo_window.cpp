@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <glm/geometric.hpp>
 
@@ -306,7 +307,23 @@ bool present_frame(DemoState& state, Window& w) {
         w.texture_height = height;
     }
     render_runs(w.framebuffer, w.run_frames, state, columns_of(state, w), &w.draw_pool);
-    SDL_UpdateTexture(w.texture, nullptr, w.framebuffer.colours().data(), width * 4);
+    // Into the texture's own memory, rows split between the drawing threads: SDL_UpdateTexture
+    // copied the 2.6 MB of a 896 x 720 view on one thread, 1.3-1.5 ms a frame here.
+    void* texels = nullptr;
+    int pitch = 0;
+    if (SDL_LockTexture(w.texture, nullptr, &texels, &pitch) == 0) {
+        const raster::Rgba8* rows = w.framebuffer.colours().data();
+        const auto row_bytes = static_cast<std::size_t>(width) * sizeof(raster::Rgba8);
+        w.draw_pool.parallel_for(
+            static_cast<std::size_t>(height), [&](std::size_t begin, std::size_t end) {
+                for (std::size_t y = begin; y < end; ++y)
+                    std::memcpy(static_cast<char*>(texels) + y * static_cast<std::size_t>(pitch),
+                                rows + y * static_cast<std::size_t>(width), row_bytes);
+            });
+        SDL_UnlockTexture(w.texture);
+    } else {
+        SDL_UpdateTexture(w.texture, nullptr, w.framebuffer.colours().data(), width * 4);
+    }
     const SDL_Rect beside_panel{static_cast<int>(view.x), static_cast<int>(view.y), width, height};
     SDL_RenderCopy(w.renderer, w.texture, nullptr, &beside_panel);
     return true;

@@ -20,7 +20,10 @@ StepClock::Plan StepClock::advance(double elapsed, double dt, double seconds_per
     owed_ -= plan.steps * dt;
     if (plan.steps < wanted) {
         plan.behind = true;
-        owed_ = std::fmod(owed_, dt);  // drop what cannot be afforded rather than owe it
+        // What one slow frame (a busy host, a rebuild) could not afford is owed to the next
+        // ones, which have budget to spare when the machine keeps pace on average; beyond
+        // max_debt it is dropped, so a machine that cannot keep pace does not spiral.
+        owed_ = std::min(owed_, max_debt + std::fmod(owed_, dt));
     }
     return plan;
 }

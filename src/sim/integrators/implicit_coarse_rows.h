@@ -14,8 +14,6 @@
 
 namespace weft {
 
-struct ImplicitCoarseLevel;
-
 struct CoarseRows {
     static constexpr int blocks = 5;  // own, then the forward slots (0,1) (1,-1) (1,0) (1,1)
     int rows = 0, cols = 0;
@@ -25,8 +23,6 @@ struct CoarseRows {
     std::vector<float> storage;
 
     void size_for(int level_rows, int level_cols);
-    // The level's row `row` (built) into float rows.
-    void store_row(const ImplicitCoarseLevel& level, int row);
     // Entry e of block b at node (row, -1 .. cols); row may be -1 (zeros).
     const float* entry(int block, int e, int row) const {
         return storage.data() +

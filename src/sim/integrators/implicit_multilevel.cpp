@@ -102,6 +102,13 @@ void fine_couplings(const implicit_kernel::Job& job, const implicit_kernel::Dire
     }
 }
 
+// into[n] += scale from[2 n] over n nodes: a fine row's terms of one column parity into the
+// row of coarse nodes they belong to.
+void add_every_other(double* __restrict into, const float* __restrict from, double scale,
+                     int nodes) {
+    for (int n = 0; n < nodes; ++n) into[n] += scale * static_cast<double>(from[2 * n]);
+}
+
 // The first coarse level, from the fine stencil: A_c = Pᵀ F A F P over the free particles.
 // A spring from fine (r, c) to (r + dr, c + dc) joins the aggregates (r/2, c/2) and
 // ((r + dr)/2, (c + dc)/2): which of a node's slots it lands in depends only on the parity of
@@ -125,37 +132,65 @@ void build_from_fine(ImplicitCoarseLevel& level, const implicit_kernel::Job& job
                 slots[k][row_parity][col_parity] = slot_of(row_step, col_step);
             }
     const int cols = job.cols;
+    const auto coarse_cols = static_cast<std::size_t>(level.cols);
+    // A coarse row's blocks are summed in rows of doubles, one per block (own, then the
+    // forward slots) and entry, with a column in front that takes the springs of slot -1 off
+    // the grid's left edge: each sum then runs over a row's columns with a fixed stride, and
+    // every node's terms still come in the order of fine row, direction and column.
+    const std::size_t sum_row = coarse_cols + 1;
     over_rows(level.rows, job.rows * job.cols, pool, [&](int begin, int end) {
         thread_local std::vector<float> couplings;  // grown once: no step allocates
+        thread_local std::vector<double> sums;
         couplings.resize(6 * static_cast<std::size_t>(cols));
+        sums.resize(CoarseRows::blocks * 6 * sum_row);
+        auto sum_of = [&](int block, int e) {
+            return sums.data() + (static_cast<std::size_t>(block) * 6 + e) * sum_row + 1;
+        };
         for (int row = begin; row < end; ++row) {
-            const std::size_t first_node = static_cast<std::size_t>(row) * level.cols;
+            std::fill(sums.begin(), sums.end(), 0.0);
             for (int r = 2 * row; r < std::min(2 * row + 2, job.rows); ++r) {
                 const std::size_t base = job.pad + static_cast<std::size_t>(r) * cols;
-                for (int c = 0; c < cols; ++c) {
-                    double* diagonal = &level.diagonal[6 * (first_node + c / 2)];
-                    for (int e = 0; e < 6; ++e) diagonal[e] += job.diagonal[e][base + c];
+                for (int e = 0; e < 6; ++e) {
+                    add_every_other(sum_of(0, e), job.diagonal[e] + base, 1.0, (cols + 1) / 2);
+                    add_every_other(sum_of(0, e), job.diagonal[e] + base + 1, 1.0, cols / 2);
                 }
                 for (int k = 0; k < job.direction_count; ++k) {
                     fine_couplings(job, job.directions[k], r, couplings.data());
-                    const int* slot_by_parity = slots[k][r % 2];
-                    for (int c = 0; c < cols; ++c) {
-                        const int slot = slot_by_parity[c % 2];
-                        if (slot == -1 && c < 2) continue;  // off the grid: no spring
-                        const std::size_t node = first_node + c / 2;
-                        double* into = slot == -2   ? &level.diagonal[6 * node]
-                                       : slot == -1 ? &level.neighbours[(node - 1) * 24]
-                                                    : &level.neighbours[(node * 4 + slot) * 6];
+                    for (int parity = 0; parity < 2; ++parity) {
+                        const int slot = slots[k][r % 2][parity];
+                        // Slot -2: inside the aggregate, twice into its own block; -1: the
+                        // left node's (0, 1) coupling; else the node's forward slot.
+                        const int block = slot == -2 ? 0 : slot == -1 ? 1 : slot + 1;
+                        const int shift = slot == -1 ? -1 : 0;
                         const double scale = slot == -2 ? 2.0 : 1.0;
+                        const int nodes = (cols - parity + 1) / 2;
                         for (int e = 0; e < 6; ++e)
-                            into[e] += scale * couplings[static_cast<std::size_t>(e) * cols + c];
+                            add_every_other(
+                                sum_of(block, e) + shift,
+                                couplings.data() + static_cast<std::size_t>(e) * cols + parity,
+                                scale, nodes);
                     }
                 }
             }
-            for (int col = 0; col < level.cols; ++col)
-                invert_symmetric_block(&level.diagonal[6 * (first_node + col)],
-                                       &level.inverse[6 * (first_node + col)]);
-            if (float_rows) float_rows->store_row(level, row);
+            const std::size_t first_node = static_cast<std::size_t>(row) * coarse_cols;
+            for (std::size_t n = 0; n < coarse_cols; ++n) {
+                double* diagonal = &level.diagonal[6 * (first_node + n)];
+                double* neighbours = &level.neighbours[24 * (first_node + n)];
+                for (int e = 0; e < 6; ++e) {
+                    diagonal[e] = sum_of(0, e)[n];
+                    for (int slot = 0; slot < 4; ++slot)
+                        neighbours[6 * slot + e] = sum_of(slot + 1, e)[n];
+                }
+                invert_symmetric_block(diagonal, &level.inverse[6 * (first_node + n)]);
+            }
+            if (float_rows)
+                for (int block = 0; block < CoarseRows::blocks; ++block)
+                    for (int e = 0; e < 6; ++e) {
+                        float* out = const_cast<float*>(float_rows->entry(block, e, row));
+                        const double* from = sum_of(block, e);
+                        for (std::size_t n = 0; n < coarse_cols; ++n)
+                            out[n] = static_cast<float>(from[n]);
+                    }
         }
     });
 }

@@ -28,8 +28,9 @@ void DemoState::step_once() {
     single_step = paused;
 }
 
-StepClock::Plan DemoState::plan_frame(double elapsed, double seconds_per_step) {
-    if (!paused) return clock.advance(elapsed, simulation.dt(), seconds_per_step);
+StepClock::Plan DemoState::plan_frame(double elapsed, double seconds_per_step,
+                                      double other_seconds) {
+    if (!paused) return clock.advance(elapsed, simulation.dt(), seconds_per_step, other_seconds);
     clock.reset();
     const StepClock::Plan plan{single_step ? 1 : 0, false};
     single_step = false;

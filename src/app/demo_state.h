@@ -222,8 +222,9 @@ struct DemoState {
     void step_once();
     // The steps this frame takes: the clock's plan for `elapsed` wall seconds, or while
     // paused none, or the one step_once() owed (the clock then owes nothing, so resuming
-    // does not rush to catch up).
-    StepClock::Plan plan_frame(double elapsed, double seconds_per_step);
+    // does not rush to catch up). `other_seconds`: what the last frame spent besides
+    // stepping (StepClock::advance).
+    StepClock::Plan plan_frame(double elapsed, double seconds_per_step, double other_seconds = 0.0);
 
     // Once a frame, after it is stepped and drawn (statistics.sim_seconds and
     // raster_seconds set): measures the main run's largest stretch and, for a frame that

@@ -442,6 +442,7 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
         return particles;
     };
     std::size_t measured_on = 0;
+    double other_seconds = 0.0;  // the last frame's work besides stepping (drawing, panel)
     bool running = true;
     while (running) {
         w.layout = layout_of(w);
@@ -459,7 +460,7 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
         // Step: as many fixed steps as keep simulated time with the clock, within budget;
         // while paused, none but the one N or the panel's step button asked for.
         if (particles_stepped() != measured_on) seconds_per_step = 0.0;
-        const StepClock::Plan plan = state.plan_frame(elapsed, seconds_per_step);
+        const StepClock::Plan plan = state.plan_frame(elapsed, seconds_per_step, other_seconds);
         const double sim_start = now_seconds();
         const int steps = state.step(plan.steps);
         const double sim_seconds = now_seconds() - sim_start;
@@ -510,6 +511,7 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
             w.save_window_next_frame = false;
         }
         SDL_RenderPresent(w.renderer);
+        other_seconds = now_seconds() - now - sim_seconds;
         // Wait out the rest of the refresh period, in whole milliseconds and a little short
         // (the step clock measures what the frame really took). The software renderer does
         // not wait for vertical sync whatever it is asked; one that does has already waited.

@@ -5,7 +5,8 @@
 
 namespace weft::app {
 
-StepClock::Plan StepClock::advance(double elapsed, double dt, double seconds_per_step) {
+StepClock::Plan StepClock::advance(double elapsed, double dt, double seconds_per_step,
+                                   double other_seconds) {
     Plan plan;
     // A frame longer than a quarter second (a window drag, a debugger) is not caught up.
     owed_ += std::min(std::max(elapsed, 0.0), 0.25);
@@ -15,7 +16,8 @@ StepClock::Plan StepClock::advance(double elapsed, double dt, double seconds_per
     // in one frame: a 6 s freeze.
     long long affordable = 1;
     if (seconds_per_step > 0.0)
-        affordable = std::max<long long>(1, static_cast<long long>(budget_ / seconds_per_step));
+        affordable = std::max<long long>(
+            1, static_cast<long long>(budget(other_seconds) / seconds_per_step));
     plan.steps = static_cast<int>(std::min({wanted, affordable, 100000LL}));
     owed_ -= plan.steps * dt;
     if (plan.steps < wanted) {

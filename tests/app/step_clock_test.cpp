@@ -62,5 +62,35 @@ TEST(StepClock, AnUnknownStepCostBuysOneStepToMeasureIt) {
     EXPECT_LE(clock.owed(), StepClock::max_debt + 0.001);
 }
 
+TEST(StepClock, SteppingMayFillAFrameDownToThirtyFramesASecond) {
+    // A 256² implicit sheet: 1/60 s steps of 13 ms, 6 ms of drawing and panel a frame. The
+    // fixed 25 ms budget buys one step a frame, half of real time at any frame rate; two
+    // steps and the drawing fit in a 30 fps frame (32 ms), so the clock takes them.
+    const double dt = 1.0 / 60.0, step = 0.013, other = 0.006;
+    StepClock fixed;
+    long long fixed_steps = 0;
+    for (int frame = 0; frame < 300; ++frame)
+        fixed_steps += fixed.advance(step + other, dt, step).steps;  // other unknown
+    EXPECT_EQ(fixed_steps, 300);  // one a frame: 5 s simulated in 5.7 s
+
+    StepClock clock;
+    EXPECT_NEAR(clock.budget(other), StepClock::floor_period - other, 1e-12);
+    long long steps = 0;
+    double wall = 0.0;
+    for (int frame = 0; frame < 300; ++frame) {
+        const double elapsed = 2 * step + other;  // as long as two steps and the rest take
+        const StepClock::Plan plan = clock.advance(elapsed, dt, step, other);
+        EXPECT_LE(plan.steps, 2) << frame;
+        steps += plan.steps;
+        wall += elapsed;
+    }
+    EXPECT_NEAR(static_cast<double>(steps) * dt, wall, dt + 1e-9);  // real time, within a step
+
+    // A frame whose other work leaves less than the fixed budget keeps the fixed budget, so
+    // a slow machine is never cut below it.
+    EXPECT_DOUBLE_EQ(clock.budget(0.03), 1.0 / 40.0);
+    EXPECT_DOUBLE_EQ(clock.budget(0.0), 1.0 / 40.0);
+}
+
 }  // namespace
 }  // namespace weft::app

@@ -1,19 +1,25 @@
 #include "sim/energy.h"
 
+#include <algorithm>
+#include <cmath>
 #include <glm/geometric.hpp>
+#include <limits>
 
 #include "sim/chunked_reduce.h"
 
 namespace weft {
 
-Energy measure_energy(const Cloth& cloth, const ForceField& field, WorkerPool* pool) {
+EnergyAndStretch measure_energy_and_stretch(const Cloth& cloth, const ForceField& field,
+                                            WorkerPool* pool) {
     auto add = [](Energy a, const Energy& b) {
         a.kinetic += b.kinetic;
         a.gravitational += b.gravitational;
         a.elastic += b.elastic;
         return a;
     };
-    Energy energy = reduce_in_chunks(
+    EnergyAndStretch measures;
+    Energy& energy = measures.energy;
+    energy = reduce_in_chunks(
         pool, cloth.particle_count(), Energy{},
         [&](std::size_t begin, std::size_t end) {
             Energy part;
@@ -26,23 +32,43 @@ Energy measure_energy(const Cloth& cloth, const ForceField& field, WorkerPool* p
             return part;
         },
         add);
+    // Per chunk: the elastic energy, summed, and the largest ratio, a maximum (exact in any
+    // order); the sums are the same as without it.
+    struct SpringPart {
+        double elastic = 0.0;
+        double largest = -std::numeric_limits<double>::infinity();
+    };
+    double largest = -std::numeric_limits<double>::infinity();
     for (const SpringGroup& group : cloth.spring_groups) {
-        energy.elastic += reduce_in_chunks(
-            pool, group.springs.size(), 0.0,
+        const SpringPart group_part = reduce_in_chunks(
+            pool, group.springs.size(), SpringPart{},
             [&](std::size_t begin, std::size_t end) {
-                double elastic = 0.0;
+                SpringPart part;
                 for (std::size_t k = begin; k < end; ++k) {
                     const Spring& spring = group.springs[k];
-                    const double extension =
-                        glm::length(cloth.positions[spring.j] - cloth.positions[spring.i]) -
-                        spring.rest_length;
-                    elastic += 0.5 * group.stiffness * extension * extension;
+                    const double length =
+                        glm::length(cloth.positions[spring.j] - cloth.positions[spring.i]);
+                    const double extension = length - spring.rest_length;
+                    part.elastic += 0.5 * group.stiffness * extension * extension;
+                    part.largest = std::max(part.largest, length / spring.rest_length);
                 }
-                return elastic;
+                return part;
             },
-            [](double a, double b) { return a + b; });
+            [](SpringPart a, const SpringPart& b) {
+                a.elastic += b.elastic;
+                a.largest = std::max(a.largest, b.largest);
+                return a;
+            });
+        energy.elastic += group_part.elastic;
+        largest = std::max(largest, group_part.largest);
     }
-    return energy;
+    measures.largest_stretch_ratio =
+        std::isfinite(largest) ? largest : std::numeric_limits<double>::quiet_NaN();
+    return measures;
+}
+
+Energy measure_energy(const Cloth& cloth, const ForceField& field, WorkerPool* pool) {
+    return measure_energy_and_stretch(cloth, field, pool).energy;
 }
 
 }  // namespace weft

@@ -183,6 +183,12 @@ TEST(SheetMeasures, AreTheSameBitsOnAnyThreadCount) {
         EXPECT_EQ(split.gravitational, serial.gravitational) << threads;
         EXPECT_EQ(split.elastic, serial.elastic) << threads;
         EXPECT_EQ(largest_stretch_ratio(cloth, &pool), plain_largest) << threads;
+        // The window's one pass for both: the same bits as the two passes.
+        const EnergyAndStretch both = measure_energy_and_stretch(cloth, field, &pool);
+        EXPECT_EQ(both.energy.kinetic, serial.kinetic) << threads;
+        EXPECT_EQ(both.energy.gravitational, serial.gravitational) << threads;
+        EXPECT_EQ(both.energy.elastic, serial.elastic) << threads;
+        EXPECT_EQ(both.largest_stretch_ratio, plain_largest) << threads;
     }
 }
 

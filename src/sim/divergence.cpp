@@ -67,8 +67,8 @@ bool any_spring_maybe_runaway(const SpringGroup& group, const Vec3* x, std::size
     return suspect != 0;
 }
 
-// Whether the exact scan below could find anything.
-bool maybe_diverged(const Cloth& cloth, bool check_runaway_stretch, WorkerPool* pool) {
+// Whether some position or velocity is not finite.
+bool state_non_finite(const Cloth& cloth, WorkerPool* pool) {
     std::atomic<bool> found{false};
     const std::size_t values = 3 * cloth.particle_count();
     for_ranges(pool, values, [&](std::size_t begin, std::size_t end) {
@@ -76,7 +76,14 @@ bool maybe_diverged(const Cloth& cloth, bool check_runaway_stretch, WorkerPool* 
             any_non_finite(&cloth.velocities.data()->x + begin, end - begin))
             found.store(true, std::memory_order_relaxed);
     });
-    if (found.load() || !check_runaway_stretch) return found.load();
+    return found.load();
+}
+
+// Whether the exact scan below could find anything.
+bool maybe_diverged(const Cloth& cloth, bool check_runaway_stretch, WorkerPool* pool) {
+    if (state_non_finite(cloth, pool)) return true;
+    if (!check_runaway_stretch) return false;
+    std::atomic<bool> found{false};
     // A grid tests its springs per direction over rows; anything else spring by spring.
     if (auto suspect = grid_springs_maybe_longer_than(cloth, runaway_stretch_ratio, pool))
         return *suspect;
@@ -174,6 +181,18 @@ std::optional<std::string> DivergenceGuard::check(const Cloth& cloth, bool check
                                     cloth.velocities, request->limit_squared, pool);
         if (!sweep.non_finite && !sweep.moved) return std::nullopt;
     }
+    // A grid's springs answer the runaway test and give the next reference's headroom in one
+    // pass (the same numbers as the scans below, which took two passes at every frame-sized
+    // implicit step of a large sheet, one of them spring by spring).
+    if (check_runaway_stretch)
+        if (const auto grid = grid_stretch_headroom(cloth, runaway_stretch_ratio, pool);
+            grid && !grid->maybe_longer && !state_non_finite(cloth, pool)) {
+            reference_positions_ = cloth.positions;
+            headroom_ = grid->headroom;
+            length_scale_ = grid->scale;
+            reference_valid_ = true;
+            return std::nullopt;
+        }
     std::optional<std::string> verdict = find_divergence(cloth, check_runaway_stretch, pool);
     if (verdict) {
         reference_valid_ = false;

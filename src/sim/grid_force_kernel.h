@@ -78,6 +78,21 @@ bool rows_maybe_overstretched_avx2(const Job& job, double ratio_squared, int row
 bool rows_maybe_overstretched_avx512(const Job& job, double ratio_squared, int row_begin,
                                      int row_end);
 
+// rows_maybe_overstretched's test, and the least headroom min (ratio L - |d|) and the largest
+// ratio L over the live springs starting on rows [row_begin, row_end): the divergence
+// guard's next reference (divergence.cpp) from the same pass.
+struct StretchHeadroom {
+    bool maybe_longer = false;  // |d|² > ratio_squared L² for some spring
+    double headroom = 0.0;      // m; +infinity without a live spring
+    double scale = 0.0;         // m
+};
+StretchHeadroom rows_stretch_headroom_baseline(const Job& job, double ratio, double ratio_squared,
+                                               int row_begin, int row_end);
+StretchHeadroom rows_stretch_headroom_avx2(const Job& job, double ratio, double ratio_squared,
+                                           int row_begin, int row_end);
+StretchHeadroom rows_stretch_headroom_avx512(const Job& job, double ratio, double ratio_squared,
+                                             int row_begin, int row_end);
+
 // The divergence guard's particle sweep over interleaved arrays (x y z per particle):
 // whether a position or velocity is not finite, and whether some particle may have moved
 // from its reference by |x - x_ref|² >= limit_squared: every such particle is flagged, and

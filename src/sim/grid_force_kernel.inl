@@ -288,6 +288,46 @@ bool rows_maybe_overstretched(const Job& job, double ratio_squared, int row_begi
     return suspect != 0;
 }
 
+// The divergence guard's pass over the springs after a step that moved particles far
+// (divergence.cpp): the runaway test of rows_maybe_overstretched and, for the next reference,
+// the headroom min (ratio L - |d|) and the scale max (ratio L) over live springs, each |d| as
+// glm::length computes it, so the same numbers as the scan spring by spring.
+StretchHeadroom rows_stretch_headroom(const Job& job, double ratio, double ratio_squared,
+                                      int row_begin, int row_end) {
+    const auto cols = static_cast<std::size_t>(job.cols);
+    unsigned suspect = 0;
+    double headroom = std::numeric_limits<double>::infinity();
+    double scale = 0.0;
+    for (int row = row_begin; row < row_end; ++row) {
+        for (int k = 0; k < job.direction_count; ++k) {
+            const Direction& direction = job.directions[k];
+            if (row + direction.row_step >= job.rows) continue;
+            const int dc = direction.col_step;
+            const auto c_begin = static_cast<std::size_t>(dc < 0 ? -dc : 0);
+            const auto c_end =
+                static_cast<std::size_t>(std::max(dc > 0 ? job.cols - dc : job.cols, 0));
+            const std::size_t first = static_cast<std::size_t>(row) * cols;
+            const std::ptrdiff_t offset = direction.row_step * job.cols + dc;
+            const double* __restrict a = job.positions + 3 * first;
+            const double* __restrict b =
+                job.positions + 3 * (static_cast<std::ptrdiff_t>(first) + offset);
+            const double* __restrict rest = direction.rest_lengths + first;
+            for (std::size_t c = c_begin; c < c_end; ++c) {
+                const double dx = b[3 * c] - a[3 * c], dy = b[3 * c + 1] - a[3 * c + 1],
+                             dz = b[3 * c + 2] - a[3 * c + 2];
+                const double length_squared = dx * dx + dy * dy + dz * dz;
+                const bool live = rest[c] >= 0.0;
+                suspect |= live && length_squared > ratio_squared * rest[c] * rest[c] ? 1u : 0u;
+                const double limit = ratio * rest[c];
+                const double left = limit - std::sqrt(length_squared);
+                headroom = live && left < headroom ? left : headroom;
+                scale = live && limit > scale ? limit : scale;
+            }
+        }
+    }
+    return {suspect != 0, headroom, scale};
+}
+
 // The divergence guard's sweep over particles (divergence.cpp): flags a non-finite position
 // or velocity, and whether some particle has moved from its reference position by
 // |x - x_ref|² >= limit_squared. Branch-free, so it vectorises.

@@ -5,6 +5,7 @@
 // product and sum rounded alike, so every build gives the same bits.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "sim/grid_force_kernel.h"
 
@@ -27,11 +28,17 @@ bool WEFT_KERNEL_NAME(rows_maybe_overstretched, WEFT_KERNEL_SUFFIX)(const Job& j
     return rows_maybe_overstretched(job, ratio_squared, row_begin, row_end);
 }
 
-void WEFT_KERNEL_NAME(sweep_particles, WEFT_KERNEL_SUFFIX)(const double* x,
-                                                           const double* reference,
+StretchHeadroom WEFT_KERNEL_NAME(rows_stretch_headroom,
+                                 WEFT_KERNEL_SUFFIX)(const Job& job, double ratio,
+                                                     double ratio_squared, int row_begin,
+                                                     int row_end) {
+    return rows_stretch_headroom(job, ratio, ratio_squared, row_begin, row_end);
+}
+
+void WEFT_KERNEL_NAME(sweep_particles, WEFT_KERNEL_SUFFIX)(const double* x, const double* reference,
                                                            const double* v, std::size_t count,
-                                                           double limit_squared,
-                                                           bool& non_finite, bool& moved) {
+                                                           double limit_squared, bool& non_finite,
+                                                           bool& moved) {
     sweep_particles(x, reference, v, count, limit_squared, non_finite, moved);
 }
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <limits>
+#include <mutex>
 #include <vector>
 
 #include "sim/drag.h"
@@ -181,6 +183,29 @@ std::optional<bool> grid_springs_maybe_longer_than(const Cloth& cloth, double ra
             suspect.store(true, std::memory_order_relaxed);
     });
     return suspect.load();
+}
+
+std::optional<grid_kernel::StretchHeadroom> grid_stretch_headroom(const Cloth& cloth, double ratio,
+                                                                  WorkerPool* pool) {
+    grid_kernel::Job job;
+    if (!grid_stencil_usable(cloth) || !describe_stencil(cloth, cloth.positions, job))
+        return std::nullopt;
+    const double ratio_squared = ratio * ratio * (1.0 - 1e-9);
+    const auto kernel = kernel_of(grid_kernel::rows_stretch_headroom_baseline,
+                                  grid_kernel::rows_stretch_headroom_avx2,
+                                  grid_kernel::rows_stretch_headroom_avx512);
+    if (!use_threads(cloth, pool)) return kernel(job, ratio, ratio_squared, 0, job.rows);
+    grid_kernel::StretchHeadroom total{false, std::numeric_limits<double>::infinity(), 0.0};
+    std::mutex merge;
+    pool->parallel_for(static_cast<std::size_t>(job.rows), [&](std::size_t begin, std::size_t end) {
+        const grid_kernel::StretchHeadroom part =
+            kernel(job, ratio, ratio_squared, static_cast<int>(begin), static_cast<int>(end));
+        std::lock_guard lock(merge);
+        total.maybe_longer = total.maybe_longer || part.maybe_longer;
+        total.headroom = std::min(total.headroom, part.headroom);
+        total.scale = std::max(total.scale, part.scale);
+    });
+    return total;
 }
 
 ParticleSweep sweep_particles(std::span<const Vec3> positions, std::span<const Vec3> reference,

@@ -13,6 +13,7 @@
 
 #include "parallel/worker_pool.h"
 #include "sim/cloth.h"
+#include "sim/grid_force_kernel.h"
 
 namespace weft {
 
@@ -87,6 +88,13 @@ bool step_grid_symplectic_euler(Cloth& cloth, const ForceField& field, double dt
 // test |d| > ratio L, which the caller then runs. Nothing when there is no usable stencil.
 std::optional<bool> grid_springs_maybe_longer_than(const Cloth& cloth, double ratio,
                                                    WorkerPool* pool);
+
+// The guard's pass after a far move, over the stencil: grid_springs_maybe_longer_than's test
+// and the headroom min (ratio L - |d|) and scale max (ratio L) over live springs (the same
+// numbers as spring by spring: minima and maxima are exact in any order). Nothing when there
+// is no usable stencil.
+std::optional<grid_kernel::StretchHeadroom> grid_stretch_headroom(const Cloth& cloth, double ratio,
+                                                                  WorkerPool* pool);
 
 // The guard's sweep on its own, vectorised with the same kernel builds.
 ParticleSweep sweep_particles(std::span<const Vec3> positions, std::span<const Vec3> reference,

@@ -3,7 +3,9 @@
 // every kernel build giving the same bits.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <glm/geometric.hpp>
+#include <limits>
 
 #include "loaded_cloth.h"
 #include "sim/cloth_builder.h"
@@ -163,6 +165,47 @@ TEST(GridForcePass, OverstretchTestFlagsOnlyLiveSpringsPastTheRatio) {
     // With every spring of that corner gone, nothing is left to overstretch.
     remove_springs_if(cloth, [](const Spring& s) { return s.j == 35 || s.i == 35; });
     EXPECT_FALSE(*grid_springs_maybe_longer_than(cloth, 5.0, nullptr));
+}
+
+// The guard's one pass after a far move gives the next reference's headroom: the same
+// numbers as spring by spring over the general arrays, on 1 to 3 threads, dead springs
+// (torn or cut) left out.
+TEST(GridForcePass, StretchHeadroomIsTheSpringBySpringMinimum) {
+    Scene scene = grid_scene(70, 70);  // 4900 particles: enough for the threads
+    scene.shear.enabled = true;
+    scene.bend.enabled = true;
+    Cloth cloth = build_grid_cloth(scene);
+    for (std::size_t p = 0; p < cloth.particle_count(); ++p)  // uneven stretch everywhere
+        cloth.positions[p] *= 1.0 + 0.3 * std::sin(0.37 * static_cast<double>(p));
+    remove_springs_if(cloth, [](const Spring& s) { return s.i % 97 == 0; });
+    const double ratio = 5.0;
+    double headroom = std::numeric_limits<double>::infinity(), scale = 0.0;
+    for (const SpringGroup& group : cloth.spring_groups)
+        for (const Spring& spring : group.springs) {
+            const double length =
+                glm::length(cloth.positions[spring.j] - cloth.positions[spring.i]);
+            headroom = std::min(headroom, ratio * spring.rest_length - length);
+            scale = std::max(scale, ratio * spring.rest_length);
+        }
+    const SimdLevel before = simd_level();
+    for (SimdLevel level : {SimdLevel::baseline, SimdLevel::avx2, SimdLevel::avx512}) {
+        if (level > supported_simd_level()) continue;
+        set_simd_level(level);
+        for (int threads : {1, 2, 3}) {
+            WorkerPool pool(threads);
+            const auto grid = grid_stretch_headroom(cloth, ratio, &pool);
+            ASSERT_TRUE(grid.has_value());
+            EXPECT_EQ(grid->headroom, headroom) << threads << simd_level_name(level);
+            EXPECT_EQ(grid->scale, scale) << threads << simd_level_name(level);
+            EXPECT_EQ(grid->maybe_longer, *grid_springs_maybe_longer_than(cloth, ratio, &pool));
+        }
+    }
+    set_simd_level(before);
+    // Past the ratio: flagged, and the headroom negative.
+    cloth.positions[35] += Vec3(0.0, 0.0, 2.0);
+    const auto far = grid_stretch_headroom(cloth, ratio, nullptr);
+    EXPECT_TRUE(far->maybe_longer);
+    EXPECT_LT(far->headroom, 0.0);
 }
 
 }  // namespace

@@ -146,9 +146,13 @@ void DivergenceGuard::renew_reference(const Cloth& cloth, WorkerPool* pool) {
             scale = std::max(scale, longest);
         });
     }
+    keep_reference(cloth, headroom, scale);
+}
+
+void DivergenceGuard::keep_reference(const Cloth& cloth, double headroom, double length_scale) {
     reference_positions_ = cloth.positions;
     headroom_ = headroom;
-    length_scale_ = scale;
+    length_scale_ = length_scale;
     reference_valid_ = true;
 }
 
@@ -187,10 +191,7 @@ std::optional<std::string> DivergenceGuard::check(const Cloth& cloth, bool check
     if (check_runaway_stretch)
         if (const auto grid = grid_stretch_headroom(cloth, runaway_stretch_ratio, pool);
             grid && !grid->maybe_longer && !state_non_finite(cloth, pool)) {
-            reference_positions_ = cloth.positions;
-            headroom_ = grid->headroom;
-            length_scale_ = grid->scale;
-            reference_valid_ = true;
+            keep_reference(cloth, grid->headroom, grid->scale);
             return std::nullopt;
         }
     std::optional<std::string> verdict = find_divergence(cloth, check_runaway_stretch, pool);
@@ -203,9 +204,7 @@ std::optional<std::string> DivergenceGuard::check(const Cloth& cloth, bool check
     } else {
         // Only finiteness to watch: the positions serve as the reference, the bound is unused
         // (a headroom of -infinity sends a later stretch check to the full scan).
-        reference_positions_ = cloth.positions;
-        headroom_ = -std::numeric_limits<double>::infinity();
-        reference_valid_ = true;
+        keep_reference(cloth, -std::numeric_limits<double>::infinity(), length_scale_);
     }
     return std::nullopt;
 }

@@ -57,6 +57,8 @@ class DivergenceGuard {
 
   private:
     void renew_reference(const Cloth& cloth, WorkerPool* pool);
+    // The cloth's positions become the reference, with its springs' headroom and scale.
+    void keep_reference(const Cloth& cloth, double headroom, double length_scale);
 
     std::vector<Vec3> reference_positions_;  // m, x_ref
     double headroom_ = 0.0;                  // m, H

@@ -254,12 +254,13 @@ SweepFlags force_rows(const Job& job, int row_begin, int row_end, double* scratc
     return flags;
 }
 
-// The divergence guard's stretch test on rows [row_begin, row_end): true if some live spring
-// starting there has |d|² > ratio_squared L². Reads positions in place (interleaved x y z);
-// no square root, no early exit, so the loop vectorises.
-bool rows_maybe_overstretched(const Job& job, double ratio_squared, int row_begin, int row_end) {
+// Runs body(a, b, rest, c_begin, c_end) for every direction's springs that start on each of
+// rows [row_begin, row_end): a and b point at the two ends' positions (interleaved x y z) of
+// column 0, rest at the rest lengths (negative: no spring), columns [c_begin, c_end) being
+// those whose spring stays on the grid. The spring passes of the divergence guard below.
+template <class Body>
+void over_spring_rows(const Job& job, int row_begin, int row_end, Body&& body) {
     const auto cols = static_cast<std::size_t>(job.cols);
-    unsigned suspect = 0;
     for (int row = row_begin; row < row_end; ++row) {
         for (int k = 0; k < job.direction_count; ++k) {
             const Direction& direction = job.directions[k];
@@ -272,19 +273,30 @@ bool rows_maybe_overstretched(const Job& job, double ratio_squared, int row_begi
                 static_cast<std::size_t>(std::max(dc > 0 ? job.cols - dc : job.cols, 0));
             const std::size_t first = static_cast<std::size_t>(row) * cols;
             const std::ptrdiff_t offset = direction.row_step * job.cols + dc;
-            const double* __restrict a = job.positions + 3 * first;
-            const double* __restrict b =
-                job.positions + 3 * (static_cast<std::ptrdiff_t>(first) + offset);
-            const double* __restrict rest = direction.rest_lengths + first;
-            for (std::size_t c = c_begin; c < c_end; ++c) {
-                const double dx = b[3 * c] - a[3 * c], dy = b[3 * c + 1] - a[3 * c + 1],
-                             dz = b[3 * c + 2] - a[3 * c + 2];
-                const double limit = ratio_squared * rest[c] * rest[c];
-                const double live = rest[c] >= 0.0 ? 1.0 : 0.0;
-                suspect |= live * (dx * dx + dy * dy + dz * dz) > limit ? 1u : 0u;
-            }
+            body(job.positions + 3 * first,
+                 job.positions + 3 * (static_cast<std::ptrdiff_t>(first) + offset),
+                 direction.rest_lengths + first, c_begin, c_end);
         }
     }
+}
+
+// The divergence guard's stretch test on rows [row_begin, row_end): true if some live spring
+// starting there has |d|² > ratio_squared L². Reads positions in place (interleaved x y z);
+// no square root, no early exit, so the loop vectorises.
+bool rows_maybe_overstretched(const Job& job, double ratio_squared, int row_begin, int row_end) {
+    unsigned suspect = 0;
+    over_spring_rows(job, row_begin, row_end,
+                     [&](const double* __restrict a, const double* __restrict b,
+                         const double* __restrict rest, std::size_t c_begin, std::size_t c_end) {
+                         for (std::size_t c = c_begin; c < c_end; ++c) {
+                             const double dx = b[3 * c] - a[3 * c],
+                                          dy = b[3 * c + 1] - a[3 * c + 1],
+                                          dz = b[3 * c + 2] - a[3 * c + 2];
+                             const double limit = ratio_squared * rest[c] * rest[c];
+                             const double live = rest[c] >= 0.0 ? 1.0 : 0.0;
+                             suspect |= live * (dx * dx + dy * dy + dz * dz) > limit ? 1u : 0u;
+                         }
+                     });
     return suspect != 0;
 }
 
@@ -294,24 +306,13 @@ bool rows_maybe_overstretched(const Job& job, double ratio_squared, int row_begi
 // glm::length computes it, so the same numbers as the scan spring by spring.
 StretchHeadroom rows_stretch_headroom(const Job& job, double ratio, double ratio_squared,
                                       int row_begin, int row_end) {
-    const auto cols = static_cast<std::size_t>(job.cols);
     unsigned suspect = 0;
     double headroom = std::numeric_limits<double>::infinity();
     double scale = 0.0;
-    for (int row = row_begin; row < row_end; ++row) {
-        for (int k = 0; k < job.direction_count; ++k) {
-            const Direction& direction = job.directions[k];
-            if (row + direction.row_step >= job.rows) continue;
-            const int dc = direction.col_step;
-            const auto c_begin = static_cast<std::size_t>(dc < 0 ? -dc : 0);
-            const auto c_end =
-                static_cast<std::size_t>(std::max(dc > 0 ? job.cols - dc : job.cols, 0));
-            const std::size_t first = static_cast<std::size_t>(row) * cols;
-            const std::ptrdiff_t offset = direction.row_step * job.cols + dc;
-            const double* __restrict a = job.positions + 3 * first;
-            const double* __restrict b =
-                job.positions + 3 * (static_cast<std::ptrdiff_t>(first) + offset);
-            const double* __restrict rest = direction.rest_lengths + first;
+    over_spring_rows(
+        job, row_begin, row_end,
+        [&](const double* __restrict a, const double* __restrict b, const double* __restrict rest,
+            std::size_t c_begin, std::size_t c_end) {
             for (std::size_t c = c_begin; c < c_end; ++c) {
                 const double dx = b[3 * c] - a[3 * c], dy = b[3 * c + 1] - a[3 * c + 1],
                              dz = b[3 * c + 2] - a[3 * c + 2];
@@ -323,8 +324,7 @@ StretchHeadroom rows_stretch_headroom(const Job& job, double ratio, double ratio
                 headroom = live && left < headroom ? left : headroom;
                 scale = live && limit > scale ? limit : scale;
             }
-        }
-    }
+        });
     return {suspect != 0, headroom, scale};
 }
 

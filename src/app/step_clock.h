@@ -11,7 +11,8 @@ class StepClock {
   public:
     // budget: seconds of stepping a frame may always take (wall clock). A frame whose other
     // work (drawing, the panel) leaves more of floor_period gets that instead: stepping may
-    // fill a frame down to floor_fps, and below it real time gives way, not the frame rate.
+    // fill a frame down to 30 fps (floor_period), and below it real time gives way, not the
+    // frame rate.
     // A fixed 25 ms cut a 256² implicit sheet, whose 1/60 s step takes 14 ms here, to one
     // step a frame (0.84 of real time at 42 fps) where two fit in a 30 fps frame.
     explicit StepClock(double budget_seconds = 1.0 / 40.0) : budget_(budget_seconds) {}

@@ -167,12 +167,30 @@ bool step_grid_symplectic_euler(Cloth& cloth, const ForceField& field, double dt
     return true;
 }
 
-std::optional<bool> grid_springs_maybe_longer_than(const Cloth& cloth, double ratio,
-                                                   WorkerPool* pool) {
+namespace {
+
+// The guard's spring passes over the stencil (below): the cloth's springs as a job over its
+// positions, or nothing without a usable stencil; and the bound of their "maybe longer"
+// test, ratio² (1 - 1e-9) L², a superset of the exact |d| > ratio L, whose rounding differs.
+std::optional<grid_kernel::Job> spring_rows_job(const Cloth& cloth) {
     grid_kernel::Job job;
     if (!grid_stencil_usable(cloth) || !describe_stencil(cloth, cloth.positions, job))
         return std::nullopt;
-    const double ratio_squared = ratio * ratio * (1.0 - 1e-9);
+    return job;
+}
+
+double maybe_ratio_squared(double ratio) {
+    return ratio * ratio * (1.0 - 1e-9);
+}
+
+}  // namespace
+
+std::optional<bool> grid_springs_maybe_longer_than(const Cloth& cloth, double ratio,
+                                                   WorkerPool* pool) {
+    const std::optional<grid_kernel::Job> described = spring_rows_job(cloth);
+    if (!described) return std::nullopt;
+    const grid_kernel::Job& job = *described;
+    const double ratio_squared = maybe_ratio_squared(ratio);
     const auto kernel = kernel_of(grid_kernel::rows_maybe_overstretched_baseline,
                                   grid_kernel::rows_maybe_overstretched_avx2,
                                   grid_kernel::rows_maybe_overstretched_avx512);
@@ -187,10 +205,10 @@ std::optional<bool> grid_springs_maybe_longer_than(const Cloth& cloth, double ra
 
 std::optional<grid_kernel::StretchHeadroom> grid_stretch_headroom(const Cloth& cloth, double ratio,
                                                                   WorkerPool* pool) {
-    grid_kernel::Job job;
-    if (!grid_stencil_usable(cloth) || !describe_stencil(cloth, cloth.positions, job))
-        return std::nullopt;
-    const double ratio_squared = ratio * ratio * (1.0 - 1e-9);
+    const std::optional<grid_kernel::Job> described = spring_rows_job(cloth);
+    if (!described) return std::nullopt;
+    const grid_kernel::Job& job = *described;
+    const double ratio_squared = maybe_ratio_squared(ratio);
     const auto kernel = kernel_of(grid_kernel::rows_stretch_headroom_baseline,
                                   grid_kernel::rows_stretch_headroom_avx2,
                                   grid_kernel::rows_stretch_headroom_avx512);

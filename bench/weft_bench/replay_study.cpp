@@ -53,9 +53,16 @@ int run_replay_study(const ReplayOptions& options) {
         if (stop_requested) break;
         app::SessionRecord run = *record;
         run.scene_toml = with_integrator(record->scene_toml, integrator);
-        for (app::TimedEvent& timed : run.events)
-            if (timed.event.kind == app::ClothEvent::Kind::parameters)
-                timed.event.scene_toml = with_integrator(timed.event.scene_toml, integrator);
+        // The session's own changes of integrator become changes to this one.
+        for (app::TimedEvent& timed : run.events) {
+            for (SceneEdit& edit : timed.event.edits)
+                if (edit.key == SceneKey::integrator) edit.value = integrator;
+            if (timed.event.scene) {  // a format-1 recording's whole scene
+                auto scene = std::make_shared<Scene>(*timed.event.scene);
+                scene->solver.integrator = integrator;
+                timed.event.scene = std::move(scene);
+            }
+        }
         std::printf("  %-17s ", integrator_name(integrator));
         std::fflush(stdout);
         const SceneLoadResult scene = load_scene_text(run.scene_toml, "replayed scene");

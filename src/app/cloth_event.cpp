@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "sim/drag.h"
-#include "sim/scene_loader.h"
 #include "sim/topology_edits.h"
 
 namespace weft::app {
@@ -24,6 +23,8 @@ const char* event_kind_name(ClothEvent::Kind kind) {
             return "unpin";
         case ClothEvent::Kind::release_pins:
             return "release-pins";
+        case ClothEvent::Kind::edit:
+            return "edit";
         case ClothEvent::Kind::parameters:
             return "parameters";
         case ClothEvent::Kind::reset:
@@ -31,6 +32,22 @@ const char* event_kind_name(ClothEvent::Kind kind) {
     }
     return "unknown";
 }
+
+namespace {
+
+// Runs `simulation` on `wanted` from here on: live where only parameters differ, as a new
+// simulation where the cloth or a collider's shape does.
+EventResult run_with(Simulation& simulation, Scene wanted, const SolverSpec* keep_solver) {
+    if (keep_solver) wanted.solver = *keep_solver;
+    if (!Simulation::live_changeable(simulation.scene(), wanted)) {
+        simulation = Simulation(wanted);
+        return EventResult::rebuilt;
+    }
+    simulation.set_parameters(wanted);
+    return EventResult::applied;
+}
+
+}  // namespace
 
 EventResult apply_event(Simulation& simulation, const ClothEvent& event,
                         const SolverSpec* keep_solver) {
@@ -61,17 +78,14 @@ EventResult apply_event(Simulation& simulation, const ClothEvent& event,
         case ClothEvent::Kind::release_pins:
             simulation.release_all_pins();
             return EventResult::applied;
-        case ClothEvent::Kind::parameters: {
-            SceneLoadResult loaded = load_scene_text(event.scene_toml, "event");
-            if (!loaded.ok()) return EventResult::refused;
-            if (keep_solver) loaded.scene->solver = *keep_solver;
-            if (!Simulation::live_changeable(simulation.scene(), *loaded.scene)) {
-                simulation = Simulation(*loaded.scene);
-                return EventResult::rebuilt;
-            }
-            simulation.set_parameters(*loaded.scene);
-            return EventResult::applied;
+        case ClothEvent::Kind::edit: {
+            Scene wanted = simulation.scene();
+            if (apply_scene_edits(wanted, event.edits)) return EventResult::refused;
+            return run_with(simulation, std::move(wanted), keep_solver);
         }
+        case ClothEvent::Kind::parameters:
+            if (!event.scene) return EventResult::refused;
+            return run_with(simulation, *event.scene, keep_solver);
         case ClothEvent::Kind::reset:
             simulation.reset();
             return EventResult::applied;

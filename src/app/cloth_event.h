@@ -6,10 +6,12 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "sim/picking.h"
+#include "sim/scene_edit.h"
 #include "sim/simulation.h"
 
 namespace weft::app {
@@ -23,7 +25,8 @@ struct ClothEvent {
         pin,           // particle
         unpin,         // particle
         release_pins,  // free every pinned particle
-        parameters,    // scene_toml: the live parameters to run with (checked already)
+        edit,          // edits: typed parameter changes (scene_edit.h), all or none
+        parameters,    // scene: a whole scene to run with; only in format-1 recordings
         reset,         // back to the scene's start
     };
     Kind kind = Kind::let_go;
@@ -32,7 +35,8 @@ struct ClothEvent {
     Vec3 target{0.0};                    // pull, m
     std::vector<std::uint64_t> springs;  // cut: edge_key(i, j) of each spring, ascending
     std::uint32_t particle = 0;          // pin, unpin
-    std::string scene_toml;              // parameters: a whole scene, as scene_to_toml writes it
+    std::vector<SceneEdit> edits;        // edit
+    std::shared_ptr<const Scene> scene;  // parameters (checked when read)
 };
 
 const char* event_kind_name(ClothEvent::Kind kind);
@@ -46,13 +50,13 @@ inline ClothEvent plain_event(ClothEvent::Kind kind) {
 
 enum class EventResult {
     applied,  // done (or did not fit this simulation and was ignored)
-    rebuilt,  // a parameters event changed the cloth's grid: `simulation` is a new one
-    refused,  // a parameters event whose scene does not load: nothing changed
+    rebuilt,  // an edit changed the cloth (its grid, mass): `simulation` is a new one
+    refused,  // an edit the scene rules refuse: nothing changed
 };
 
 // Applies the event to `simulation`. An event that does not fit it (a particle it does not
-// have) is ignored. A parameters event keeps `keep_solver`'s integrator and dt if given: runs
-// side by side share the material and the forces but each keeps its own method.
+// have) is ignored. An edit or parameters event keeps `keep_solver`'s integrator and dt if
+// given: runs side by side share the material and the forces but each keeps its own method.
 EventResult apply_event(Simulation& simulation, const ClothEvent& event,
                         const SolverSpec* keep_solver = nullptr);
 

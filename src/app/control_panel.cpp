@@ -17,6 +17,7 @@
 #include "app/screenshot_names.h"
 #include "app/session_record.h"
 #include "app/status_text.h"
+#include "sim/scene_rules.h"
 #include "sim/stability_limit.h"
 
 namespace weft::app {
@@ -63,18 +64,28 @@ void run_buttons(DemoState& state) {
     if (ImGui::SmallButton("reset (R)")) state.reset_simulation();
 }
 
-const char* const integrator_names[] = {
-    "explicit-euler", "symplectic-euler", "verlet", "velocity-verlet", "rk4", "implicit-euler"};
+// The integrators' names for a combo box: integrator_names (scene.h) as C strings.
+struct IntegratorNames {
+    const char* names[integrator_names.size()];
+    IntegratorNames() {
+        for (std::size_t i = 0; i < integrator_names.size(); ++i)
+            names[i] = integrator_names[i].data();
+    }
+};
+
+bool integrator_combo(int& current, const char* label = "integrator") {
+    static const IntegratorNames combo;
+    return ImGui::Combo(label, &current, combo.names, static_cast<int>(integrator_names.size()));
+}
 
 void solver(DemoState& state) {
     const Simulation& sim = state.simulation;
     int current = static_cast<int>(sim.integrator());
-    if (ImGui::Combo("integrator", &current, integrator_names,
-                     static_cast<int>(std::size(integrator_names))))
-        edit(state, "solver.integrator", integrator_names[current]);  // a bare word: a string
+    if (integrator_combo(current))
+        edit(state, {SceneKey::integrator, static_cast<Integrator>(current)});
     refusal_below("solver.integrator");
     double dt_ms = sim.dt() * 1e3;
-    if (slider_log("dt (ms)", dt_ms, 0.01, 10.0)) edit(state, "solver.dt", number(dt_ms * 1e-3));
+    if (slider_log("dt (ms)", dt_ms, 0.01, 10.0)) edit(state, {SceneKey::dt, dt_ms * 1e-3});
     refusal_below("solver.dt");
     const double limit =
         estimated_step_limit(sim.cloth(), sim.force_field().air_drag, sim.integrator());
@@ -97,6 +108,7 @@ void materials(DemoState& state) {
                                        : family == SpringFamily::shear    ? scene.shear
                                                                           : scene.bend;
         const std::string key = std::string("springs.") + spring_family_name(family);
+        const auto index = static_cast<std::size_t>(family);  // spring_family_names' order
         ImGui::PushID(static_cast<int>(family));
         const SpringGroup* group = state.simulation.cloth().find_group(family);
         const std::size_t count = group ? group->springs.size() : 0;
@@ -108,15 +120,15 @@ void materials(DemoState& state) {
                           count);
             bool enabled = spec.enabled;
             if (ImGui::Checkbox(label, &enabled))
-                edit(state, key + ".enabled", enabled ? "true" : "false");
+                edit(state, {spring_key(index, SpringField::enabled), enabled});
             refusal_below(key + ".enabled");
         }
         double stiffness = spec.stiffness, damping = spec.damping;
         if (slider_log("stiffness (N/m)", stiffness, 1.0, 1e5))
-            edit(state, key + ".stiffness", number(stiffness));
+            edit(state, {spring_key(index, SpringField::stiffness), stiffness});
         refusal_below(key + ".stiffness");
         if (slider_log("damping (N s/m)", damping, 1e-4, 10.0))
-            edit(state, key + ".damping", number(damping));
+            edit(state, {spring_key(index, SpringField::damping), damping});
         refusal_below(key + ".damping");
         ImGui::PopID();
     }
@@ -125,37 +137,31 @@ void materials(DemoState& state) {
         // A mesh's masses are lumped from its triangles' areas: its material has a density.
         double density = cloth.density;  // kg/m²
         if (slider_log("density (kg/m2)", density, 0.01, 100.0))
-            edit(state, "cloth.density", number(density));
+            edit(state, {SceneKey::cloth_density, density});
         refusal_below("cloth.density");
         return;
     }
     double mass_g = cloth.particle_mass * 1e3;
     if (slider_log("particle mass (g)", mass_g, 0.1, 1000.0))
-        edit(state, "cloth.particle_mass", number(mass_g * 1e-3));
+        edit(state, {SceneKey::cloth_particle_mass, mass_g * 1e-3});
     refusal_below("cloth.particle_mass");
 }
 
 // An optional feature table such as [tearing]: a checkbox for its presence, and under it a
 // slider for its value (beside the checkbox it ran past a narrow panel's edge). Switching it
 // on is an edit like any other; switching it off removes the table, which is always valid.
-void optional_feature(DemoState& state, const char* label, const char* table, const char* key,
+void optional_feature(DemoState& state, const char* label, SceneKey key,
                       std::optional<double> Scene::*member, double shown, double low, double high,
                       const char* suffix) {
-    ImGui::PushID(table);
+    const std::string path(scene_key_names[static_cast<std::size_t>(key)]);
+    ImGui::PushID(path.c_str());
     const std::optional<double>& value = state.simulation.scene().*member;
     bool on = value.has_value();
     double v = value.value_or(shown);
-    const std::string path = std::string(table) + "." + key;
-    if (ImGui::Checkbox(label, &on)) {
-        if (on) {
-            edit(state, path, number(v));
-        } else {
-            Scene without = state.simulation.scene();
-            without.*member = std::nullopt;
-            answer_edit(path, state.change_scene(without));
-        }
-    }
-    if (slider_log(key, v, low, high, suffix) && on) edit(state, path, number(v));
+    if (ImGui::Checkbox(label, &on))
+        edit(state, on ? SceneEdit{key, v} : SceneEdit{key, FeatureOff{}});
+    if (slider_log(path.substr(path.find('.') + 1).c_str(), v, low, high, suffix) && on)
+        edit(state, {key, v});
     refusal_below(path);
     ImGui::PopID();
 }
@@ -200,8 +206,7 @@ void save(DemoState& state) {
 // Copies of the scene beside the main run, each with its own integrator and dt.
 void comparison(DemoState& state) {
     static int new_integrator = static_cast<int>(Integrator::rk4);
-    ImGui::Combo("##new", &new_integrator, integrator_names,
-                 static_cast<int>(std::size(integrator_names)));
+    integrator_combo(new_integrator, "##new");
     ImGui::SameLine();
     if (ImGui::Button("add a copy beside"))
         state.add_companion(static_cast<Integrator>(new_integrator), state.simulation.dt());
@@ -211,13 +216,12 @@ void comparison(DemoState& state) {
         ImGui::Text("copy %zu", c + 1);
         int current = static_cast<int>(copy.integrator());
         const std::string control = "copy." + std::to_string(c);
-        if (ImGui::Combo("integrator", &current, integrator_names,
-                         static_cast<int>(std::size(integrator_names))))
-            answer_edit(control, state.change_companion(c, {std::string("solver.integrator=") +
-                                                            integrator_names[current]}));
+        if (integrator_combo(current))
+            answer_edit(control, state.edit_companion(c, {{SceneKey::integrator,
+                                                           static_cast<Integrator>(current)}}));
         double dt_ms = copy.dt() * 1e3;
         if (slider_log("dt (ms)", dt_ms, 0.01, 10.0))
-            answer_edit(control, state.change_companion(c, {"solver.dt=" + number(dt_ms * 1e-3)}));
+            answer_edit(control, state.edit_companion(c, {{SceneKey::dt, dt_ms * 1e-3}}));
         refusal_below(control);
         if (ImGui::Button("remove")) state.remove_companion(c);
         ImGui::PopID();
@@ -268,11 +272,11 @@ void session(DemoState& state) {
 }
 
 void limits(DemoState& state) {
-    optional_feature(state, "tearing", "tearing", "max_stretch", &Scene::tear_max_stretch, 1.6,
+    optional_feature(state, "tearing", SceneKey::tear_max_stretch, &Scene::tear_max_stretch, 1.6,
                      1.05, 5.0, " x rest");
-    optional_feature(state, "strain limit", "strain_limit", "max_stretch",
+    optional_feature(state, "strain limit", SceneKey::strain_limit_max_stretch,
                      &Scene::strain_limit_max_stretch, 0.1, 0.01, 1.0, "");
-    optional_feature(state, "self-collision", "self_collision", "thickness",
+    optional_feature(state, "self-collision", SceneKey::self_collision_thickness,
                      &Scene::self_collision_thickness, 0.01, 0.002, 0.1, " m");
     double radius = state.drag_radius;
     if (slider_log("drag radius (m)", radius, 0.005, 0.5)) {
@@ -281,7 +285,7 @@ void limits(DemoState& state) {
         answer_edit("drag_radius",
                     taken ? std::nullopt
                           : std::optional<std::string>("drag radius must be in (0, 10] m, got " +
-                                                       number(radius)));
+                                                       format_number(radius)));
     }
     refusal_below("drag_radius");
     if (ImGui::Button("release all pins (U)")) state.release_all_pins();

@@ -10,6 +10,7 @@
 
 #include "app/atomic_file.h"
 #include "app/hand_tools.h"
+#include "sim/scene_edit_toml.h"
 #include "sim/scene_loader.h"
 #include "sim/scene_writer.h"
 #include "sim/state_hash.h"
@@ -198,6 +199,33 @@ int DemoState::step(int steps) {
     return steps;
 }
 
+namespace {
+
+// --set style "KEY=VALUE" overrides as typed edits; the first that does not read is refused
+// as "error: --set KEY: ...".
+std::optional<std::string> read_overrides(const std::vector<std::string>& overrides,
+                                          std::vector<SceneEdit>& edits) {
+    for (const std::string& text : overrides) {
+        SceneError error;
+        std::optional<SceneEdit> edit = scene_edit_from_override(text, error);
+        if (!edit) return error.message();
+        edits.push_back(std::move(*edit));
+    }
+    return std::nullopt;
+}
+
+// An edit's refusal as the loader words a --set one: "error: --set KEY: why", naming every
+// key of the batch (the rules that join keys blame the batch).
+std::string override_refusal(const std::vector<std::string>& overrides,
+                             const std::string& problem) {
+    std::string keys;
+    for (const std::string& text : overrides)
+        keys += (keys.empty() ? "" : ", ") + text.substr(0, text.find('='));
+    return "error: --set " + keys + ": " + problem;
+}
+
+}  // namespace
+
 // ---- runs side by side --------------------------------------------------------------------------
 
 const Simulation& DemoState::run(int index) const {
@@ -217,23 +245,27 @@ void DemoState::remove_companion(std::size_t index) {
     if (index < companions.size()) companions.erase(companions.begin() + static_cast<long>(index));
 }
 
-std::optional<std::string> DemoState::change_companion(std::size_t index,
-                                                       const std::vector<std::string>& edits) {
+std::optional<std::string> DemoState::edit_companion(std::size_t index,
+                                                     const std::vector<SceneEdit>& edits) {
     if (index >= companions.size()) return "no copy " + std::to_string(index + 1);
+    for (const SceneEdit& edit : edits)
+        if (!is_solver_key(edit.key))
+            return "a copy differs from the main run only in its integrator and dt";
     Simulation& companion = companions[index].simulation;
-    SceneLoadResult checked = load_scene_text(scene_to_toml(companion.scene()), "panel", edits);
-    if (!checked.ok()) return checked.error->message();
-    Scene same_but_solver = *checked.scene;
-    same_but_solver.solver = companion.scene().solver;
-    if (!(same_but_solver == companion.scene()))
-        return "a copy differs from the main run only in its integrator and dt";
-    // The copy's solver as the panel shows it, with the edits: dt differs from the running
-    // one only where the user set it, and only then is it the copy's new chosen dt (not
-    // whatever recovery had halved it to).
-    if (checked.scene->solver.dt != companion.dt())
-        companions[index].restart_dt = checked.scene->solver.dt;
-    companion.set_parameters(*checked.scene);
+    Scene checked = companion.scene();
+    if (auto problem = apply_scene_edits(checked, edits)) return "error: " + *problem;
+    // dt differs from the running one only where the user set it, and only then is it the
+    // copy's new chosen dt (not whatever recovery had halved it to).
+    if (checked.solver.dt != companion.dt()) companions[index].restart_dt = checked.solver.dt;
+    companion.set_parameters(checked);
     return std::nullopt;
+}
+
+std::optional<std::string> DemoState::change_companion(std::size_t index,
+                                                       const std::vector<std::string>& texts) {
+    std::vector<SceneEdit> edits;
+    if (auto error = read_overrides(texts, edits)) return error;
+    return edit_companion(index, edits);
 }
 
 // ---- the hand -----------------------------------------------------------------------------------
@@ -255,7 +287,8 @@ void DemoState::apply_to_all_runs(const ClothEvent& event) {
     // The panel writes the running parameters with its edits, so dt differs from the running
     // one only where the user set it: that is the new chosen dt. Here, not in change(), so a
     // replay of the event chooses the same dt.
-    if (event.kind == Kind::parameters && simulation.dt() != dt_before) {
+    const bool parameters = event.kind == Kind::edit || event.kind == Kind::parameters;
+    if (parameters && simulation.dt() != dt_before) {
         restart_dt = simulation.dt();
         recovery.restart_growth();
     }
@@ -283,7 +316,7 @@ void DemoState::apply_to_all_runs(const ClothEvent& event) {
         };
         remember(recovery, simulation);
         for (Companion& companion : companions) remember(companion.recovery, companion.simulation);
-    } else if (event.kind == Kind::parameters) {
+    } else if (parameters) {
         ground_height = view::ground_height_below(simulation.cloth(), simulation.colliders());
     }
     if (event.kind == ClothEvent::Kind::let_go) hand.dragging = false;
@@ -368,31 +401,37 @@ void DemoState::release_all_pins() {
 
 // ---- parameter changes ------------------------------------------------------------------------
 
-std::optional<std::string> DemoState::change(const std::vector<std::string>& edits) {
-    // The running parameters as a scene file, with the edits as --set overrides: one set of
-    // checks for files, the command line and the panel.
-    return apply(load_scene_text(scene_to_toml(simulation.scene()), "panel", edits));
-}
-
-std::optional<std::string> DemoState::change_scene(const Scene& wanted) {
-    return apply(load_scene_text(scene_to_toml(wanted), "panel"));
-}
-
-std::optional<std::string> DemoState::apply(const SceneLoadResult& checked) {
-    if (!checked.ok()) return checked.error->message();
+std::optional<std::string> DemoState::edit(const std::vector<SceneEdit>& edits) {
     if (replaying) return std::string("a session is replaying: stop it to change parameters");
+    Scene checked = simulation.scene();
+    if (auto problem = apply_scene_edits(checked, edits)) return "error: " + *problem;
+    if (edits.empty()) return std::nullopt;
     ClothEvent event;
-    event.kind = ClothEvent::Kind::parameters;
-    event.scene_toml = scene_to_toml(*checked.scene);
+    event.kind = ClothEvent::Kind::edit;
+    event.edits = edits;
     perform(event);
     return std::nullopt;
 }
 
+std::optional<std::string> DemoState::change(const std::vector<std::string>& texts) {
+    std::vector<SceneEdit> edits;
+    if (auto error = read_overrides(texts, edits)) return error;
+    Scene checked = simulation.scene();
+    if (auto problem = apply_scene_edits(checked, edits)) return override_refusal(texts, *problem);
+    return edit(edits);
+}
+
+std::optional<std::string> DemoState::change_scene(const Scene& wanted) {
+    std::optional<std::vector<SceneEdit>> edits = scene_edits_between(simulation.scene(), wanted);
+    if (!edits) return std::string("error: only loading another scene changes that");
+    return edit(*edits);
+}
+
 std::optional<std::string> DemoState::change_field_of_view(double degrees) {
-    const SceneLoadResult checked = load_scene_text(scene_to_toml(scene_to_save()), "panel",
-                                                    {"camera.fov_degrees=" + toml_number(degrees)});
-    if (!checked.ok()) return checked.error->message();
-    rig.fov_degrees = static_cast<float>(checked.scene->camera.fov_degrees);
+    Scene checked = scene_to_save();
+    const SceneEdit fov{SceneKey::camera_fov_degrees, degrees};
+    if (auto problem = apply_scene_edits(checked, {&fov, 1})) return "error: " + *problem;
+    rig.fov_degrees = static_cast<float>(checked.camera.fov_degrees);
     return std::nullopt;
 }
 

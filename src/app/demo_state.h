@@ -161,9 +161,13 @@ struct DemoState {
     // A companion starting from the main run's current state with another integrator and dt.
     void add_companion(Integrator integrator, double dt);
     void remove_companion(std::size_t index);
-    // Edits a companion's own solver ("solver.integrator=rk4", "solver.dt=0.0005"), checked.
+    // Edits a companion's own solver (solver.integrator, solver.dt), checked; the copy is not
+    // recorded (a replay has no copies unless asked for).
+    std::optional<std::string> edit_companion(std::size_t index,
+                                              const std::vector<SceneEdit>& edits);
+    // The same from --set style overrides ("solver.integrator=rk4", "solver.dt=0.0005").
     std::optional<std::string> change_companion(std::size_t index,
-                                                const std::vector<std::string>& edits);
+                                                const std::vector<std::string>& texts);
 
     // The hand, at a cursor in a view of the given size showing run `run_index`. grab()
     // takes hold only where the cursor is on that run's cloth; the event then goes to every
@@ -177,12 +181,13 @@ struct DemoState {
     bool toggle_pin(const glm::vec2& cursor, ViewSize view, int run_index = 0);
     void release_all_pins();
 
-    // Changes parameters by "KEY=VALUE" overrides of the scene format (as --set takes them),
-    // checked exactly like a scene file. Returns the error and changes nothing if any is
-    // refused; otherwise applies them live, or rebuilds the cloth if they change its grid.
-    std::optional<std::string> change(const std::vector<std::string>& overrides);
-    // The same for a whole scene (edits --set cannot name, such as a collider's fields): it
-    // is written out and read back through the loader's checks before anything changes.
+    // Changes parameters by typed edits (scene_edit.h), checked by the scene rules a file is
+    // checked by. Returns the error and changes nothing if any is refused; otherwise applies
+    // them to every run, live, or rebuilding the cloth if they change it, and records them.
+    std::optional<std::string> edit(const std::vector<SceneEdit>& edits);
+    // The same from --set style "KEY=VALUE" overrides; refusals read "error: --set KEY: ...".
+    std::optional<std::string> change(const std::vector<std::string>& texts);
+    // The same for a changed copy of the running scene: the edits that make it.
     std::optional<std::string> change_scene(const Scene& wanted);
     // The camera's vertical field of view (degrees), checked like camera.fov_degrees in a
     // scene file; the camera is the view's, not the simulation's, so nothing is recorded.
@@ -236,7 +241,6 @@ struct DemoState {
   private:
     void perform(const ClothEvent& event);  // record it, then apply it to every run
     void apply_to_all_runs(const ClothEvent& event);
-    std::optional<std::string> apply(const SceneLoadResult& checked);
     void replace_simulation(const Scene& new_scene);  // a new cloth for every run
     void after_new_state();  // views, ground, recovery, hand for a new or reset cloth
 };

@@ -1,31 +1,18 @@
 #include "app/grid_edit.h"
 
 #include "sim/scene_loader.h"
-#include "sim/scene_writer.h"
 
 namespace weft::app {
-namespace {
-
-std::string pins_value(const ClothSpec& draft) {
-    if (const char* preset = pin_preset_name(draft.pin_preset))
-        return std::string("\"") + preset + "\"";
-    std::string list = "[";
-    for (std::size_t p = 0; p < draft.pin_list.size(); ++p)
-        list += (p ? ",[" : "[") + std::to_string(draft.pin_list[p].row) + "," +
-                std::to_string(draft.pin_list[p].col) + "]";
-    return list + "]";
-}
-
-}  // namespace
-
-std::vector<std::string> grid_overrides(const ClothSpec& draft) {
+std::vector<SceneEdit> grid_edits(const ClothSpec& draft) {
     return {
-        "cloth.rows=" + std::to_string(draft.rows),
-        "cloth.cols=" + std::to_string(draft.cols),
-        "cloth.spacing=" + toml_number(draft.spacing),
-        std::string("cloth.layout=\"") + layout_name(draft.layout) + "\"",
-        std::string("cloth.orientation=\"") + orientation_name(draft.orientation) + "\"",
-        "cloth.pins=" + pins_value(draft),
+        {SceneKey::cloth_rows, std::int64_t{draft.rows}},
+        {SceneKey::cloth_cols, std::int64_t{draft.cols}},
+        {SceneKey::cloth_spacing, draft.spacing},
+        {SceneKey::cloth_layout, draft.layout},
+        {SceneKey::cloth_orientation, draft.orientation},
+        {SceneKey::cloth_pins,
+         GridPins{draft.pin_preset,
+                  draft.pin_preset == PinPreset::list ? draft.pin_list : std::vector<GridIndex>{}}},
     };
 }
 
@@ -50,7 +37,7 @@ std::optional<std::string> apply_grid(DemoState& state, const ClothSpec& draft) 
                ", the most it steps and draws at a usable frame rate (a headless run takes up "
                "to " +
                std::to_string(max_particles) + ")";
-    return state.change(grid_overrides(draft));
+    return state.edit(grid_edits(draft));
 }
 
 }  // namespace weft::app

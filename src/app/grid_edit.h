@@ -13,10 +13,10 @@
 
 namespace weft::app {
 
-// The draft as --set overrides of the scene format ("cloth.rows=40", "cloth.pins=\"none\"",
-// "cloth.pins=[[0,0],[0,9]]"), so Apply is checked exactly like the command line: a refused
-// grid (too many particles, a pin outside it) changes nothing and says why.
-std::vector<std::string> grid_overrides(const ClothSpec& draft);
+// The draft as one batch of typed edits (scene_edit.h), so Apply is checked by the rules a
+// scene file is: a refused grid (too many particles, a pin outside it) changes nothing and
+// says why.
+std::vector<SceneEdit> grid_edits(const ClothSpec& draft);
 
 // Whether two specs build the same grid: rows, cols, spacing, layout, orientation and pins
 // (mass and origin, which other controls edit, aside).

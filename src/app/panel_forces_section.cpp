@@ -9,11 +9,11 @@ namespace weft::app {
 void forces_section(DemoState& state) {
     const ForcesSpec& f = state.simulation.scene().forces;
     Vec3d gravity = f.gravity;
-    if (drag3("gravity (m/s2)", gravity, 0.05)) edit(state, "forces.gravity", vec3(gravity));
+    if (drag3("gravity (m/s2)", gravity, 0.05)) edit(state, {SceneKey::gravity, gravity});
     refusal_below("forces.gravity");
     double air_drag = f.air_drag;
     if (slider_log("air drag (N s/m)", air_drag, 1e-4, 1.0))
-        edit(state, "forces.air_drag", number(air_drag));
+        edit(state, {SceneKey::air_drag, air_drag});
     refusal_below("forces.air_drag");
     // The wind as the eye sees it: how strong and from where along the ground, and how much
     // of it blows up (or down). A horizontal part untouched this frame is sent back as it is,
@@ -31,7 +31,7 @@ void forces_section(DemoState& state) {
             wind[2] = strength * std::sin(heading * M_PI / 180.0);
         }
         wind[1] = upward;
-        edit(state, "forces.wind", vec3(wind));
+        edit(state, {SceneKey::wind, wind});
     }
     refusal_below("forces.wind");
 }

@@ -14,8 +14,8 @@ LastEdit last_edit;
 
 }  // namespace
 
-void edit(DemoState& state, const std::string& key, const std::string& value) {
-    last_edit.answer(key, state.change({key + "=" + value}));
+void edit(DemoState& state, const SceneEdit& change) {
+    last_edit.answer(scene_edit_name(change), state.edit({change}));
 }
 
 void answer_edit(std::string_view control, const std::optional<std::string>& error) {
@@ -25,18 +25,6 @@ void answer_edit(std::string_view control, const std::optional<std::string>& err
 void refusal_below(std::string_view control) {
     const std::string& refusal = last_edit.refusal_under(control);
     if (!refusal.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", refusal.c_str());
-}
-
-std::string number(double value) {
-    char text[40];
-    std::snprintf(text, sizeof text, "%.17g", value);
-    return text;
-}
-
-std::string vec3(const Vec3d& v) {
-    char text[80];
-    std::snprintf(text, sizeof text, "[%.17g,%.17g,%.17g]", v[0], v[1], v[2]);
-    return text;
 }
 
 bool slider_log(const char* label, double& value, double low, double high,

@@ -12,20 +12,16 @@
 
 namespace weft::app {
 
-// Every edit goes through DemoState::change as a --set style override, checked exactly like a
-// scene file: a refused value (one typed past a slider's range with Ctrl+click, say) shows
-// its error and changes nothing. `key` also names the control for its refusal.
-void edit(DemoState& state, const std::string& key, const std::string& value);
+// Every edit goes through DemoState::edit as a typed edit, checked by the rules a scene file
+// is: a refused value (one typed past a slider's range with Ctrl+click, say) shows its error
+// and changes nothing. The edit's key (scene_edit_name) names the control for its refusal.
+void edit(DemoState& state, const SceneEdit& change);
 // The answer to an edit made some other way (DemoState::change_scene, a companion's change):
 // `error` is said under `control` until the next edit.
 void answer_edit(std::string_view control, const std::optional<std::string>& error);
 // Under the control named `control`, the refusal of its edit if that was the last edit:
 // whole, wrapped to the panel, where the eye already is.
 void refusal_below(std::string_view control);
-
-// A number and a vector as a scene file writes them, with every digit ("%.17g").
-std::string number(double value);
-std::string vec3(const Vec3d& v);
 
 // Significant digits a slider shows its value with.
 inline constexpr int slider_digits = 3;

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "sim/scene_edit_toml.h"
 #include "sim/scene_loader.h"
 #include "sim/scene_writer.h"
 #include "sim/toml_input_guard.h"
@@ -26,10 +27,11 @@ std::string vec3(const Vec3& v) {
     return text.append("]");
 }
 
-constexpr ClothEvent::Kind all_kinds[] = {
-    ClothEvent::Kind::grab,         ClothEvent::Kind::pull,       ClothEvent::Kind::let_go,
-    ClothEvent::Kind::cut,          ClothEvent::Kind::pin,        ClothEvent::Kind::unpin,
-    ClothEvent::Kind::release_pins, ClothEvent::Kind::parameters, ClothEvent::Kind::reset};
+constexpr ClothEvent::Kind all_kinds[] = {ClothEvent::Kind::grab,         ClothEvent::Kind::pull,
+                                          ClothEvent::Kind::let_go,       ClothEvent::Kind::cut,
+                                          ClothEvent::Kind::pin,          ClothEvent::Kind::unpin,
+                                          ClothEvent::Kind::release_pins, ClothEvent::Kind::edit,
+                                          ClothEvent::Kind::parameters,   ClothEvent::Kind::reset};
 
 // Reading: every problem becomes one message with the position of the node at fault.
 struct Reader {
@@ -89,6 +91,31 @@ struct Reader {
 constexpr std::uint64_t max_index = 0xffffffffu;
 constexpr std::uint64_t max_step = std::uint64_t(1) << 62;
 
+// edits = [{key = "springs.shear.stiffness", value = 250.0}, ...]: their types are checked
+// here, their values when they are applied, as the panel's are.
+bool read_edits(Reader& reader, const toml::table& table, std::vector<SceneEdit>& edits) {
+    const toml::node* node = table.get("edits");
+    const auto* list = node ? node->as_array() : nullptr;
+    if (!list || list->empty())
+        return reader.fail(node ? node : &table, "edits must be [{key = ..., value = ...}, ...]");
+    for (const toml::node& entry : *list) {
+        const auto* pair = entry.as_table();
+        const toml::node* key = pair ? pair->get("key") : nullptr;
+        const toml::node* value = pair ? pair->get("value") : nullptr;
+        if (!key || !key->is_string() || !value || pair->size() != 2)
+            return reader.fail(&entry, "each edit must be {key = \"a.setting\", value = ...}");
+        TomlReader edit_reader(reader.source, {});
+        std::optional<SceneEdit> edit =
+            read_scene_edit(edit_reader, key->as_string()->get(), *value);
+        if (!edit) {
+            if (reader.error.empty()) reader.error = edit_reader.error()->message();
+            return false;
+        }
+        edits.push_back(std::move(*edit));
+    }
+    return true;
+}
+
 bool read_event(Reader& reader, const toml::table& table, TimedEvent& timed) {
     std::string kind_name;
     if (!reader.unsigned_at(table, "step", max_step, timed.step) ||
@@ -134,10 +161,14 @@ bool read_event(Reader& reader, const toml::table& table, TimedEvent& timed) {
             if (!reader.unsigned_at(table, "particle", max_index, index)) return false;
             event.particle = static_cast<std::uint32_t>(index);
             return true;
-        case ClothEvent::Kind::parameters: {
-            if (!reader.string_at(table, "scene", event.scene_toml)) return false;
-            SceneLoadResult checked = load_scene_text(event.scene_toml, "event scene");
+        case ClothEvent::Kind::edit:
+            return read_edits(reader, table, event.edits);
+        case ClothEvent::Kind::parameters: {  // format 1: a whole scene
+            std::string scene_toml;
+            if (!reader.string_at(table, "scene", scene_toml)) return false;
+            SceneLoadResult checked = load_scene_text(scene_toml, "event scene");
             if (!checked.ok()) return reader.fail(table.get("scene"), checked.error->message());
+            event.scene = std::make_shared<const Scene>(std::move(*checked.scene));
             return true;
         }
         case ClothEvent::Kind::let_go:
@@ -155,7 +186,7 @@ std::string session_to_toml(const SessionRecord& record) {
     char hash[32];
     std::snprintf(hash, sizeof hash, "0x%016" PRIx64, record.final_state_hash);
     out << "# weft session recording: weft --replay FILE (or --headless --replay FILE)\n";
-    out << "format = 1\nsteps = " << record.steps << "\nfinal_state_hash = \"" << hash << "\"\n";
+    out << "format = 2\nsteps = " << record.steps << "\nfinal_state_hash = \"" << hash << "\"\n";
     out << "scene = " << toml_string(record.scene_toml) << "\n";
     for (const TimedEvent& timed : record.events) {
         const ClothEvent& e = timed.event;
@@ -182,8 +213,15 @@ std::string session_to_toml(const SessionRecord& record) {
             case ClothEvent::Kind::unpin:
                 out << "particle = " << e.particle << "\n";
                 break;
+            case ClothEvent::Kind::edit:
+                out << "edits = [";
+                for (std::size_t k = 0; k < e.edits.size(); ++k)
+                    out << (k ? ", " : "") << "{key = \"" << scene_edit_name(e.edits[k])
+                        << "\", value = " << scene_value_toml(e.edits[k].value) << "}";
+                out << "]\n";
+                break;
             case ClothEvent::Kind::parameters:
-                out << "scene = " << toml_string(e.scene_toml) << "\n";
+                out << "scene = " << toml_string(e.scene ? scene_to_toml(*e.scene) : "") << "\n";
                 break;
             case ClothEvent::Kind::let_go:
             case ClothEvent::Kind::release_pins:
@@ -214,9 +252,11 @@ std::optional<SessionRecord> session_from_toml(std::string_view text, const std:
     SessionRecord record;
     std::uint64_t format = 0;
     std::string hash_text;
-    if (reader.unsigned_at(root, "format", 1000, format) && format != 1)
+    // Format 1 stored each parameter change as a whole scene; 2 stores typed edits. Both
+    // replay.
+    if (reader.unsigned_at(root, "format", 1000, format) && format != 1 && format != 2)
         reader.fail(root.get("format"),
-                    "unknown format " + std::to_string(format) + " (this weft reads 1)");
+                    "unknown format " + std::to_string(format) + " (this weft reads 1 and 2)");
     if (reader.error.empty() && reader.unsigned_at(root, "steps", max_step, record.steps) &&
         reader.string_at(root, "final_state_hash", hash_text)) {
         char* end = nullptr;

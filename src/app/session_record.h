@@ -2,7 +2,7 @@
 // which it happened, plus the step count and state hash it ended with, so a replay can show
 // that it reproduced the session bit for bit. Stored as TOML (weft --record / --replay):
 //
-//   format = 1
+//   format = 2
 //   steps = 5000                              # steps run in all
 //   final_state_hash = "0x8f3a..."            # hash_state of the cloth after them
 //   scene = "name = ...\n[cloth]\n..."        # the starting scene, every key
@@ -10,6 +10,12 @@
 //   step = 1200                               # applied before step 1200 (counting from 0)
 //   kind = "grab"                             # then the kind's fields, see cloth_event.h
 //   ...
+//   [[events]]
+//   step = 1300
+//   kind = "edit"                             # a parameter change, typed (scene_edit.h)
+//   edits = [{key = "springs.shear.stiffness", value = 250.0}]
+//
+// Format 1 (still read) stored a parameter change as kind = "parameters" with a whole scene.
 #pragma once
 
 #include <cstdint>

@@ -1,17 +1,11 @@
 #include "sim/cloth.h"
 
+#include "sim/scene.h"
+
 namespace weft {
 
 const char* spring_family_name(SpringFamily family) {
-    switch (family) {
-        case SpringFamily::structural:
-            return "structural";
-        case SpringFamily::shear:
-            return "shear";
-        case SpringFamily::bend:
-            return "bend";
-    }
-    return "unknown";
+    return spring_family_names[static_cast<std::size_t>(family)].data();
 }
 
 std::string particle_name(const Cloth& cloth, std::size_t p) {

@@ -45,6 +45,9 @@ struct ObjMesh;  // obj_reader.h
 // Equal when the meshes are equal, wherever they are held.
 struct LoadedMesh {
     std::shared_ptr<const ObjMesh> obj;
+    // m, the mean rest length of its structural springs: what a grid's spacing is to checks
+    // such as the self-collision thickness's.
+    double mean_edge_length = 0.0;
 
     bool operator==(const LoadedMesh& other) const;
 };
@@ -132,14 +135,28 @@ struct Scene {
     bool operator==(const Scene&) const = default;
 };
 
-// Canonical spellings in scene files: "grid" | "offset", "vertical" | "horizontal", and a
-// pin preset's ("none", "top-corners", "top-row"; nullptr for a list of pins, written as one).
+// The one spelling of each choice in scene files, recordings and the panel, indexed by the
+// enum's value. Everything that reads or writes a choice uses these tables.
+inline constexpr std::array<std::string_view, 2> layout_names = {"grid", "offset"};
+inline constexpr std::array<std::string_view, 2> orientation_names = {"vertical", "horizontal"};
+// The presets a grid is pinned by in a scene file; a list of pins is written as one.
+inline constexpr std::array<std::string_view, 3> pin_preset_names = {"none", "top-corners",
+                                                                     "top-row"};
+inline constexpr std::array<std::string_view, 6> integrator_names = {
+    "explicit-euler", "symplectic-euler", "verlet", "velocity-verlet", "rk4", "implicit-euler"};
+// [springs.structural], [springs.shear], [springs.bend]: SpringFamily's order (cloth.h).
+inline constexpr std::array<std::string_view, 3> spring_family_names = {"structural", "shear",
+                                                                        "bend"};
+inline constexpr std::array<std::string_view, 2> collider_type_names = {"sphere", "plane"};
+inline constexpr std::array<std::string_view, 2> contact_response_names = {"impulse", "repulsion"};
+
+// The tables' entries as C strings (each is a literal, so it ends in a NUL).
 const char* layout_name(Layout layout);
 const char* orientation_name(Orientation orientation);
+// A pin preset's spelling; nullptr for a list of pins (or a mesh's), written as one.
 const char* pin_preset_name(PinPreset preset);
-
-// Canonical spelling of an integrator in scene files ("symplectic-euler", ...).
 const char* integrator_name(Integrator integrator);
+const char* contact_response_name(ContactResponse response);
 // The integrator of that spelling, if any.
 std::optional<Integrator> integrator_from_name(std::string_view name);
 

@@ -19,52 +19,29 @@
 namespace weft {
 
 const char* layout_name(Layout layout) {
-    return layout == Layout::grid ? "grid" : "offset";
+    return layout_names[static_cast<std::size_t>(layout)].data();
 }
 
 const char* orientation_name(Orientation orientation) {
-    return orientation == Orientation::vertical ? "vertical" : "horizontal";
+    return orientation_names[static_cast<std::size_t>(orientation)].data();
 }
 
 const char* pin_preset_name(PinPreset preset) {
-    switch (preset) {
-        case PinPreset::none:
-            return "none";
-        case PinPreset::top_corners:
-            return "top-corners";
-        case PinPreset::top_row:
-            return "top-row";
-        case PinPreset::list:
-        case PinPreset::vertices:
-        case PinPreset::group:
-            break;
-    }
-    return nullptr;
+    const auto index = static_cast<std::size_t>(preset);
+    return index < pin_preset_names.size() ? pin_preset_names[index].data() : nullptr;
 }
 
 const char* integrator_name(Integrator integrator) {
-    switch (integrator) {
-        case Integrator::explicit_euler:
-            return "explicit-euler";
-        case Integrator::symplectic_euler:
-            return "symplectic-euler";
-        case Integrator::verlet:
-            return "verlet";
-        case Integrator::velocity_verlet:
-            return "velocity-verlet";
-        case Integrator::rk4:
-            return "rk4";
-        case Integrator::implicit_euler:
-            return "implicit-euler";
-    }
-    return "unknown";
+    return integrator_names[static_cast<std::size_t>(integrator)].data();
+}
+
+const char* contact_response_name(ContactResponse response) {
+    return contact_response_names[static_cast<std::size_t>(response)].data();
 }
 
 std::optional<Integrator> integrator_from_name(std::string_view name) {
-    for (Integrator integrator :
-         {Integrator::explicit_euler, Integrator::symplectic_euler, Integrator::verlet,
-          Integrator::velocity_verlet, Integrator::rk4, Integrator::implicit_euler})
-        if (name == integrator_name(integrator)) return integrator;
+    for (std::size_t i = 0; i < integrator_names.size(); ++i)
+        if (name == integrator_names[i]) return static_cast<Integrator>(i);
     return std::nullopt;
 }
 
@@ -80,8 +57,8 @@ void read_spring_family(TomlReader& reader, const toml::table& springs, std::str
     reader.check_keys(*table, path, {"enabled", "stiffness", "damping"});
     spec.enabled = true;
     reader.read_bool(*table, path, "enabled", spec.enabled);
-    reader.read_number(*table, path, "stiffness", spec.stiffness, 0.0);
-    reader.read_number(*table, path, "damping", spec.damping, 0.0);
+    reader.read_number(*table, path, "stiffness", spec.stiffness, scene_rules::spring_stiffness);
+    reader.read_number(*table, path, "damping", spec.damping, scene_rules::spring_damping);
 }
 
 void read_pins(TomlReader& reader, const toml::table& cloth, ClothSpec& spec) {
@@ -89,7 +66,7 @@ void read_pins(TomlReader& reader, const toml::table& cloth, ClothSpec& spec) {
     if (!node || reader.failed()) return;
     if (node->is_string()) {
         int preset = 0;
-        if (reader.read_choice(cloth, "cloth", "pins", {"none", "top-corners", "top-row"}, preset))
+        if (reader.read_choice(cloth, "cloth", "pins", pin_preset_names, preset))
             spec.pin_preset = static_cast<PinPreset>(preset);
         return;
     }
@@ -113,13 +90,7 @@ void read_pins(TomlReader& reader, const toml::table& cloth, ClothSpec& spec) {
         }
         const std::int64_t row = pair->get(0)->as_integer()->get();
         const std::int64_t col = pair->get(1)->as_integer()->get();
-        if (row < 0 || row >= spec.rows || col < 0 || col >= spec.cols) {
-            reader.fail(entry, "cloth.pins",
-                        "pin [" + std::to_string(row) + ", " + std::to_string(col) +
-                            "] is outside the " + std::to_string(spec.rows) + "×" +
-                            std::to_string(spec.cols) + " grid");
-            return;
-        }
+        if (!reader.check(entry, "cloth.pins", pin_problem(row, col, spec.rows, spec.cols))) return;
         spec.pin_list.push_back({static_cast<int>(row), static_cast<int>(col)});
     }
 }
@@ -135,25 +106,27 @@ void read_cloth(TomlReader& reader, const toml::table& root, Scene& scene) {
     for (const char* key : {"density", "pin_group"})
         if (const toml::node* node = cloth->get(key); node && !reader.failed())
             reader.fail(*node, std::string("cloth.") + key,
-                        std::string("cloth.") + key + " applies only to a mesh (cloth.mesh)");
+                        only_for_mesh(std::string("cloth.") + key));
     std::int64_t rows = spec.rows, cols = spec.cols;
-    reader.read_int(*cloth, "cloth", "rows", 1, max_particles, rows);
-    reader.read_int(*cloth, "cloth", "cols", 1, max_particles, cols);
-    if (!reader.failed() && rows * cols > max_particles) {
+    for (auto [key, count] : {std::pair{"rows", &rows}, std::pair{"cols", &cols}})
+        if (reader.read_int(*cloth, "cloth", key, *count) && cloth->get(key))
+            reader.check(*cloth->get(key), std::string("cloth.") + key,
+                         grid_count_problem(std::string("cloth.") + key, *count));
+    if (!reader.failed()) {
         // Blame the key the scene set (the larger one if it set both).
         const char* key =
             cloth->get("rows") && (rows >= cols || !cloth->get("cols")) ? "rows" : "cols";
-        reader.fail(*cloth->get(key), std::string("cloth.") + key,
-                    "cloth.rows × cloth.cols = " + std::to_string(rows * cols) +
-                        " particles, more than the limit of " + std::to_string(max_particles));
+        if (const toml::node* node = cloth->get(key))
+            reader.check(*node, std::string("cloth.") + key, grid_size_problem(rows, cols));
     }
     spec.rows = static_cast<int>(rows);
     spec.cols = static_cast<int>(cols);
-    reader.read_number(*cloth, "cloth", "spacing", spec.spacing, 0.0, true);
-    reader.read_number(*cloth, "cloth", "particle_mass", spec.particle_mass, 0.0, true);
+    reader.read_number(*cloth, "cloth", "spacing", spec.spacing, scene_rules::spacing);
+    reader.read_number(*cloth, "cloth", "particle_mass", spec.particle_mass,
+                       scene_rules::particle_mass);
     int layout = static_cast<int>(spec.layout), orientation = static_cast<int>(spec.orientation);
-    reader.read_choice(*cloth, "cloth", "layout", {"grid", "offset"}, layout);
-    reader.read_choice(*cloth, "cloth", "orientation", {"vertical", "horizontal"}, orientation);
+    reader.read_choice(*cloth, "cloth", "layout", layout_names, layout);
+    reader.read_choice(*cloth, "cloth", "orientation", orientation_names, orientation);
     spec.layout = static_cast<Layout>(layout);
     spec.orientation = static_cast<Orientation>(orientation);
     reader.read_vec3(*cloth, "cloth", "origin", spec.origin);
@@ -163,37 +136,28 @@ void read_cloth(TomlReader& reader, const toml::table& root, Scene& scene) {
 void read_springs(TomlReader& reader, const toml::table& root, Scene& scene) {
     const toml::table* springs = reader.sub_table(root, "", "springs");
     if (!springs) return;
-    reader.check_keys(*springs, "springs", {"structural", "shear", "bend"});
-    read_spring_family(reader, *springs, "structural", scene.structural);
-    read_spring_family(reader, *springs, "shear", scene.shear);
-    read_spring_family(reader, *springs, "bend", scene.bend);
+    reader.check_keys(*springs, "springs", spring_family_names);
+    read_spring_family(reader, *springs, spring_family_names[0], scene.structural);
+    read_spring_family(reader, *springs, spring_family_names[1], scene.shear);
+    read_spring_family(reader, *springs, spring_family_names[2], scene.bend);
     if (!reader.failed() && !scene.structural.enabled) {
-        const toml::node& node = *springs->get("structural")->as_table()->get("enabled");
-        reader.fail(node, "springs.structural.enabled", "structural springs cannot be disabled");
+        const toml::node& node = *springs->get(spring_family_names[0])->as_table()->get("enabled");
+        reader.check(node, "springs.structural.enabled",
+                     structural_enabled_problem(scene.structural.enabled));
     }
 }
 
 // An optional single-key table such as [tearing]: absent means the feature is off; present
 // means on, with the key's value or its default.
-std::string thickness_refusal(double thickness, double max_spacings, double spacing, bool mesh) {
-    char text[240];
-    std::snprintf(text, sizeof text,
-                  "a thickness of %.4g m is more than %g particle spacings (%s = %.4g "
-                  "m): every particle would be within it of dozens of others; at most %.4g m",
-                  thickness, max_spacings, mesh ? "the mesh's mean edge length" : "cloth.spacing",
-                  spacing, max_spacings * spacing);
-    return text;
-}
-
 void read_optional_feature(TomlReader& reader, const toml::table& root, std::string_view table_name,
-                           std::string_view key, double default_value, double minimum,
+                           std::string_view key, double default_value, NumberRule rule,
                            std::optional<double>& out) {
     const toml::table* table = reader.sub_table(root, "", table_name);
     if (!table) return;
     const std::string path(table_name);
     reader.check_keys(*table, path, {key});
     double value = default_value;
-    reader.read_number(*table, path, key, value, minimum, true);
+    reader.read_number(*table, path, key, value, rule);
     out = value;
 }
 
@@ -201,18 +165,16 @@ void read_forces_and_solver(TomlReader& reader, const toml::table& root, Scene& 
     if (const toml::table* forces = reader.sub_table(root, "", "forces")) {
         reader.check_keys(*forces, "forces", {"gravity", "air_drag", "wind"});
         reader.read_vec3(*forces, "forces", "gravity", scene.forces.gravity);
-        reader.read_number(*forces, "forces", "air_drag", scene.forces.air_drag, 0.0);
+        reader.read_number(*forces, "forces", "air_drag", scene.forces.air_drag,
+                           scene_rules::air_drag);
         reader.read_vec3(*forces, "forces", "wind", scene.forces.wind);
     }
     if (const toml::table* solver = reader.sub_table(root, "", "solver")) {
         reader.check_keys(*solver, "solver", {"integrator", "dt"});
         int integrator = static_cast<int>(scene.solver.integrator);
-        reader.read_choice(*solver, "solver", "integrator",
-                           {"explicit-euler", "symplectic-euler", "verlet", "velocity-verlet",
-                            "rk4", "implicit-euler"},
-                           integrator);
+        reader.read_choice(*solver, "solver", "integrator", integrator_names, integrator);
         scene.solver.integrator = static_cast<Integrator>(integrator);
-        reader.read_number(*solver, "solver", "dt", scene.solver.dt, 0.0, true);
+        reader.read_number(*solver, "solver", "dt", scene.solver.dt, scene_rules::dt);
     }
 }
 
@@ -235,28 +197,22 @@ void read_colliders(TomlReader& reader, const toml::table& root, Scene& scene) {
             *table, "colliders",
             {"type", "center", "radius", "point", "normal", "response", "restitution", "friction"});
         int type = 0, response = 0;
-        reader.read_choice(*table, "colliders", "type", {"sphere", "plane"}, type);
+        reader.read_choice(*table, "colliders", "type", collider_type_names, type);
         reader.read_vec3(*table, "colliders", "center", collider.center);
-        reader.read_number(*table, "colliders", "radius", collider.radius, 0.0, true);
+        reader.read_number(*table, "colliders", "radius", collider.radius,
+                           scene_rules::collider_radius);
         reader.read_vec3(*table, "colliders", "point", collider.point);
         reader.read_vec3(*table, "colliders", "normal", collider.normal);
-        reader.read_choice(*table, "colliders", "response", {"impulse", "repulsion"}, response);
-        reader.read_number(*table, "colliders", "restitution", collider.restitution, 0.0, false,
-                           1.0);
-        reader.read_number(*table, "colliders", "friction", collider.friction, 0.0);
+        reader.read_choice(*table, "colliders", "response", contact_response_names, response);
+        reader.read_number(*table, "colliders", "restitution", collider.restitution,
+                           scene_rules::restitution);
+        reader.read_number(*table, "colliders", "friction", collider.friction,
+                           scene_rules::friction);
         collider.type = static_cast<ColliderType>(type);
         collider.response = static_cast<ContactResponse>(response);
-        const double length = std::sqrt(collider.normal[0] * collider.normal[0] +
-                                        collider.normal[1] * collider.normal[1] +
-                                        collider.normal[2] * collider.normal[2]);
-        // Kept as written (make_colliders normalises it), so a scene saved and loaded again
-        // is the same scene bit for bit; a length whose square underflows or overflows
-        // could not be normalised.
-        if (!reader.failed() && !(length > 0.0 && std::isfinite(length))) {
-            reader.fail(*table->get("normal"), "colliders.normal",
-                        "colliders.normal must not be zero (nor so large its length overflows)");
+        if (const toml::node* normal = table->get("normal");
+            normal && !reader.check(*normal, "colliders.normal", normal_problem(collider.normal)))
             return;
-        }
         scene.colliders.push_back(collider);
     }
 }
@@ -267,38 +223,18 @@ void read_camera(TomlReader& reader, const toml::table& root, Scene& scene) {
     reader.check_keys(*camera, "camera", {"position", "target", "fov_degrees"});
     reader.read_vec3(*camera, "camera", "position", scene.camera.position);
     reader.read_vec3(*camera, "camera", "target", scene.camera.target);
-    reader.read_number(*camera, "camera", "fov_degrees", scene.camera.fov_degrees, 0.0, true,
-                       179.0);
+    reader.read_number(*camera, "camera", "fov_degrees", scene.camera.fov_degrees,
+                       scene_rules::fov_degrees);
 }
 
-// Writes one "KEY=VALUE" override into the document. A VALUE that is not TOML (a bare word
-// such as rk4 or explicit-euler) is taken as a string.
+// Writes one "KEY=VALUE" override into the document.
 std::optional<SceneError> apply_override(toml::table& root, const std::string& override_text,
                                          std::set<std::string>& overridden) {
-    const auto equals = override_text.find('=');
-    const std::string key = override_text.substr(0, equals);
-    const std::string where = "--set " + key;
-    if (equals == std::string::npos) return SceneError{where, "expects KEY=VALUE"};
-    const bool key_well_formed =
-        !key.empty() && key.front() != '.' && key.back() != '.' &&
-        key.find("..") == std::string::npos &&
-        key.find_first_not_of(
-            "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.-") ==
-            std::string::npos;
-    if (!key_well_formed) return SceneError{where, "expects a dotted key such as solver.dt"};
-    const std::string value_text = override_text.substr(equals + 1);
-
+    std::string key;
     toml::table snippet;
-    if (find_unsafe_non_ascii("value = " + value_text))
-        return SceneError{where, "non-ASCII character outside a string"};
-    try {
-        snippet = toml::parse("value = " + value_text);
-    } catch (const toml::parse_error&) {
-        snippet = toml::table{};
-        snippet.insert_or_assign("value", value_text);
-    }
+    if (auto error = parse_override(override_text, key, snippet)) return error;
     const toml::node* value = snippet.get("value");
-    if (value_text.empty() || !value) return SceneError{where, "has no value"};
+    const std::string where = "--set " + key;
 
     toml::table* table = &root;
     std::string path;
@@ -362,23 +298,18 @@ SceneLoadResult load_scene_text(std::string_view toml_text, std::string_view sou
         load_scene_mesh(reader, root, source_name, scene.cloth);
     const double spacing = mesh_spacing.value_or(scene.cloth.spacing);  // m
     read_springs(reader, root, scene);
-    read_optional_feature(reader, root, "tearing", "max_stretch", 1.6, 1.0, scene.tear_max_stretch);
-    read_optional_feature(reader, root, "strain_limit", "max_stretch", 0.1, 0.0,
-                          scene.strain_limit_max_stretch);
-    read_optional_feature(reader, root, "self_collision", "thickness", 0.01, 0.0,
-                          scene.self_collision_thickness);
-    // A thickness of many spacings makes every particle the neighbour of every other: the
-    // pass turns into all pairs (a fuzzed 64² sheet with a 1 m thickness took minutes), and
-    // the flat sheet pushes itself apart. The shipped scenes use 0.5 to 0.75 spacings.
-    constexpr double max_thickness_spacings = 2.0;
-    if (!reader.failed() && scene.self_collision_thickness &&
-        *scene.self_collision_thickness > max_thickness_spacings * spacing) {
+    read_optional_feature(reader, root, "tearing", "max_stretch", 1.6,
+                          scene_rules::tear_max_stretch, scene.tear_max_stretch);
+    read_optional_feature(reader, root, "strain_limit", "max_stretch", 0.1,
+                          scene_rules::strain_limit_max_stretch, scene.strain_limit_max_stretch);
+    read_optional_feature(reader, root, "self_collision", "thickness", 0.01,
+                          scene_rules::self_collision_thickness, scene.self_collision_thickness);
+    if (!reader.failed() && scene.self_collision_thickness) {
         const toml::table& table = *root["self_collision"].as_table();
         const toml::node* node = table.get("thickness");
-        reader.fail(node ? *node : static_cast<const toml::node&>(table),
-                    "self_collision.thickness",
-                    thickness_refusal(*scene.self_collision_thickness, max_thickness_spacings,
-                                      spacing, mesh_spacing.has_value()));
+        reader.check(
+            node ? *node : static_cast<const toml::node&>(table), "self_collision.thickness",
+            thickness_problem(*scene.self_collision_thickness, spacing, mesh_spacing.has_value()));
     }
     read_forces_and_solver(reader, root, scene);
     read_colliders(reader, root, scene);

@@ -59,9 +59,7 @@ void read_mesh_keys(TomlReader& reader, const toml::table& cloth, ClothSpec& spe
     for (const char* key : {"rows", "cols", "spacing", "particle_mass", "layout", "orientation"})
         if (const toml::node* node = cloth.get(key)) {
             reader.fail(*node, std::string("cloth.") + key,
-                        std::string("cloth.") + key +
-                            " does not apply with cloth.mesh: the mesh's vertices are the "
-                            "particles, their masses come from cloth.density");
+                        not_for_mesh(std::string("cloth.") + key));
             return;
         }
     if (!reader.read_string(cloth, "cloth", "mesh", spec.mesh)) return;
@@ -69,7 +67,7 @@ void read_mesh_keys(TomlReader& reader, const toml::table& cloth, ClothSpec& spe
         reader.fail(*cloth.get("mesh"), "cloth.mesh", "cloth.mesh must name an OBJ file");
         return;
     }
-    reader.read_number(cloth, "cloth", "density", spec.density, 0.0, true);
+    reader.read_number(cloth, "cloth", "density", spec.density, scene_rules::density);
     reader.read_vec3(cloth, "cloth", "origin", spec.origin);
     read_mesh_pins(reader, cloth, spec);
 }
@@ -101,7 +99,8 @@ std::optional<double> load_scene_mesh(TomlReader& reader, const toml::table& roo
         double total = 0.0;
         for (const Spring& spring : topology.structural) total += spring.rest_length;
         spec.mesh_data.obj = std::move(mesh);
-        return total / static_cast<double>(topology.structural.size());
+        spec.mesh_data.mean_edge_length = total / static_cast<double>(topology.structural.size());
+        return spec.mesh_data.mean_edge_length;
     } catch (const ObjError& error) {
         if (error.line() > 0)
             reader.fail_with(SceneError{error.where(), error.reason()});

@@ -12,7 +12,7 @@ std::string vec3(const Vec3d& v) {
     return text.append("]");
 }
 
-void spring_family(std::ostringstream& out, const char* name, const SpringFamilySpec& spec,
+void spring_family(std::ostringstream& out, std::string_view name, const SpringFamilySpec& spec,
                    bool always_on) {
     out << "\n[springs." << name << "]\n";
     if (!always_on) out << "enabled = " << (spec.enabled ? "true" : "false") << "\n";
@@ -96,9 +96,9 @@ std::string scene_to_toml(const Scene& scene) {
         grid_cloth(out, cloth);
     }
 
-    spring_family(out, "structural", scene.structural, true);
-    spring_family(out, "shear", scene.shear, false);
-    spring_family(out, "bend", scene.bend, false);
+    spring_family(out, spring_family_names[0], scene.structural, true);
+    spring_family(out, spring_family_names[1], scene.shear, false);
+    spring_family(out, spring_family_names[2], scene.bend, false);
 
     if (scene.tear_max_stretch)
         out << "\n[tearing]\nmax_stretch = " << toml_number(*scene.tear_max_stretch) << "\n";
@@ -121,14 +121,13 @@ std::string scene_to_toml(const Scene& scene) {
     for (const ColliderSpec& collider : scene.colliders) {
         out << "\n[[colliders]]\n";
         // Both shapes' keys, so the collider reads back field for field whatever its type.
-        out << "type = \"" << (collider.type == ColliderType::sphere ? "sphere" : "plane")
+        out << "type = \"" << collider_type_names[static_cast<std::size_t>(collider.type)]
             << "\"\n";
         out << "center = " << vec3(collider.center) << "  # m, sphere\n";
         out << "radius = " << toml_number(collider.radius) << "  # m, sphere\n";
         out << "point = " << vec3(collider.point) << "  # m, plane\n";
         out << "normal = " << vec3(collider.normal) << "  # plane\n";
-        out << "response = \""
-            << (collider.response == ContactResponse::impulse ? "impulse" : "repulsion") << "\"\n";
+        out << "response = \"" << contact_response_name(collider.response) << "\"\n";
         out << "restitution = " << toml_number(collider.restitution) << "\n";
         out << "friction = " << toml_number(collider.friction) << "\n";
     }

@@ -1,5 +1,7 @@
 #include "sim/toml_reader.h"
 
+#include "sim/toml_input_guard.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -23,16 +25,10 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
     return row[b.size()];
 }
 
-std::string format_number(double value) {
-    std::ostringstream out;
-    out << value;
-    return out.str();
-}
-
 }  // namespace
 
 std::optional<std::string> nearest_key(std::string_view key,
-                                       std::initializer_list<std::string_view> allowed) {
+                                       std::span<const std::string_view> allowed) {
     std::optional<std::string> best;
     std::size_t best_distance = std::max<std::size_t>(2, key.size() / 3) + 1;
     for (std::string_view candidate : allowed) {
@@ -108,7 +104,7 @@ bool TomlReader::fail(const toml::node& node, const std::string& path, std::stri
 }
 
 bool TomlReader::check_keys(const toml::table& table, const std::string& path,
-                            std::initializer_list<std::string_view> allowed) {
+                            std::span<const std::string_view> allowed) {
     if (failed()) return false;
     for (auto&& [key, node] : table) {
         if (std::find(allowed.begin(), allowed.end(), key.str()) != allowed.end()) continue;
@@ -122,7 +118,7 @@ bool TomlReader::check_keys(const toml::table& table, const std::string& path,
 }
 
 bool TomlReader::read_int(const toml::table& table, const std::string& path, std::string_view key,
-                          std::int64_t minimum, std::int64_t maximum, std::int64_t& out) {
+                          std::int64_t& out) {
     const toml::node* node = table.get(key);
     if (failed()) return false;
     if (!node) return true;
@@ -130,18 +126,12 @@ bool TomlReader::read_int(const toml::table& table, const std::string& path, std
     const auto* integer = node->as_integer();
     if (!integer)
         return fail(*node, full, full + " must be an integer, got " + describe_type(*node));
-    const std::int64_t value = integer->get();
-    if (value < minimum || value > maximum)
-        return fail(*node, full,
-                    full + " must be between " + std::to_string(minimum) + " and " +
-                        std::to_string(maximum) + ", got " + std::to_string(value));
-    out = value;
+    out = integer->get();
     return true;
 }
 
 bool TomlReader::read_number(const toml::table& table, const std::string& path,
-                             std::string_view key, double& out, std::optional<double> minimum,
-                             bool exclusive_minimum, std::optional<double> maximum) {
+                             std::string_view key, double& out, NumberRule rule) {
     const toml::node* node = table.get(key);
     if (failed()) return false;
     if (!node) return true;
@@ -153,17 +143,15 @@ bool TomlReader::read_number(const toml::table& table, const std::string& path,
         value = floating->get();
     else
         return fail(*node, full, full + " must be a number, got " + describe_type(*node));
-    if (!std::isfinite(value)) return fail(*node, full, full + " must be a finite number");
-    if (minimum && (exclusive_minimum ? value <= *minimum : value < *minimum))
-        return fail(*node, full,
-                    full + " must be " + (exclusive_minimum ? "> " : ">= ") +
-                        format_number(*minimum) + ", got " + format_number(value));
-    if (maximum && value > *maximum)
-        return fail(
-            *node, full,
-            full + " must be <= " + format_number(*maximum) + ", got " + format_number(value));
+    if (!check(*node, full, number_problem(full, value, rule))) return false;
     out = value;
     return true;
+}
+
+bool TomlReader::check(const toml::node& node, const std::string& path,
+                       const std::optional<std::string>& problem) {
+    if (failed()) return false;
+    return !problem || fail(node, path, *problem);
 }
 
 bool TomlReader::read_bool(const toml::table& table, const std::string& path, std::string_view key,
@@ -192,7 +180,7 @@ bool TomlReader::read_string(const toml::table& table, const std::string& path,
 }
 
 bool TomlReader::read_choice(const toml::table& table, const std::string& path,
-                             std::string_view key, std::initializer_list<std::string_view> names,
+                             std::string_view key, std::span<const std::string_view> names,
                              int& index) {
     std::string value;
     const toml::node* node = table.get(key);
@@ -249,6 +237,32 @@ const toml::table* TomlReader::sub_table(const toml::table& table, const std::st
     const std::string full = join(path, key);
     fail(*node, full, full + " must be a table, got " + describe_type(*node));
     return nullptr;
+}
+
+std::optional<SceneError> parse_override(const std::string& override_text, std::string& key,
+                                         toml::table& snippet) {
+    const auto equals = override_text.find('=');
+    key = override_text.substr(0, equals);
+    const std::string where = "--set " + key;
+    if (equals == std::string::npos) return SceneError{where, "expects KEY=VALUE"};
+    const bool key_well_formed =
+        !key.empty() && key.front() != '.' && key.back() != '.' &&
+        key.find("..") == std::string::npos &&
+        key.find_first_not_of(
+            "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.-") ==
+            std::string::npos;
+    if (!key_well_formed) return SceneError{where, "expects a dotted key such as solver.dt"};
+    const std::string value_text = override_text.substr(equals + 1);
+    if (find_unsafe_non_ascii("value = " + value_text))
+        return SceneError{where, "non-ASCII character outside a string"};
+    try {
+        snippet = toml::parse("value = " + value_text);
+    } catch (const toml::parse_error&) {
+        snippet = toml::table{};
+        snippet.insert_or_assign("value", value_text);
+    }
+    if (value_text.empty() || !snippet.get("value")) return SceneError{where, "has no value"};
+    return std::nullopt;
 }
 
 }  // namespace weft

@@ -88,7 +88,7 @@ TEST(PanelEdits, ApplyRebuildsTheGridAsDrafted) {
     draft.orientation = Orientation::horizontal;
     draft.pin_preset = PinPreset::list;
     draft.pin_list = {{0, 0}, {8, 12}};
-    ASSERT_FALSE(state.change(grid_overrides(draft)));
+    ASSERT_FALSE(state.edit(grid_edits(draft)));
     const Scene& scene = state.simulation.scene();
     EXPECT_TRUE(scene.cloth == draft);
     const Cloth& cloth = state.simulation.cloth();
@@ -99,7 +99,7 @@ TEST(PanelEdits, ApplyRebuildsTheGridAsDrafted) {
     EXPECT_EQ(state.step(10), 10);
     for (PinPreset preset : {PinPreset::none, PinPreset::top_row, PinPreset::top_corners}) {
         draft.pin_preset = preset;
-        ASSERT_FALSE(state.change(grid_overrides(draft)));
+        ASSERT_FALSE(state.edit(grid_edits(draft)));
         EXPECT_EQ(state.simulation.scene().cloth.pin_preset, preset);
     }
 }
@@ -108,7 +108,7 @@ TEST(PanelEdits, ApplyingTheRunningGridChangesNothingBitForBit) {
     DemoState applied = demo(), untouched = demo();
     applied.step(100);
     untouched.step(100);
-    ASSERT_FALSE(applied.change(grid_overrides(applied.simulation.scene().cloth)));
+    ASSERT_FALSE(applied.edit(grid_edits(applied.simulation.scene().cloth)));
     applied.step(100);
     untouched.step(100);
     EXPECT_EQ(hash_state(applied.simulation.cloth()), hash_state(untouched.simulation.cloth()));
@@ -120,8 +120,7 @@ TEST(PanelEdits, AHugeGridIsRefusedAtOnceWithTheLimit) {
     draft.rows = 100000;
     draft.cols = 100000;
     const std::size_t particles_before = state.simulation.cloth().particle_count();
-    const std::string why =
-        refused(state, [&](DemoState& s) { return s.change(grid_overrides(draft)); });
+    const std::string why = refused(state, [&](DemoState& s) { return s.edit(grid_edits(draft)); });
     // Refused by the count, before anything is built: the running sheet is the one it was.
     EXPECT_EQ(state.simulation.cloth().particle_count(), particles_before);
     EXPECT_NE(why.find("more than the limit of " + std::to_string(max_particles)),
@@ -169,15 +168,15 @@ TEST(PanelEdits, ABadGridIsRefusedAndSaysWhy) {
     draft.pin_preset = PinPreset::list;
     draft.pin_list = {{0, 23}};
     draft.cols = 10;  // the pin falls outside
-    EXPECT_NE(refused(state, [&](DemoState& s) { return s.change(grid_overrides(draft)); })
-                  .find("outside"),
-              std::string::npos);
+    EXPECT_NE(
+        refused(state, [&](DemoState& s) { return s.edit(grid_edits(draft)); }).find("outside"),
+        std::string::npos);
     draft = state.simulation.scene().cloth;
     draft.rows = 0;
-    refused(state, [&](DemoState& s) { return s.change(grid_overrides(draft)); });
+    refused(state, [&](DemoState& s) { return s.edit(grid_edits(draft)); });
     draft = state.simulation.scene().cloth;
     draft.spacing = -0.05;
-    refused(state, [&](DemoState& s) { return s.change(grid_overrides(draft)); });
+    refused(state, [&](DemoState& s) { return s.edit(grid_edits(draft)); });
 }
 
 }  // namespace

@@ -126,11 +126,31 @@ TEST(Session, ARecordingReadsBackFieldForField) {
     ClothEvent pin;
     pin.kind = ClothEvent::Kind::pin;
     pin.particle = 8;
-    ClothEvent parameters;
+    ClothEvent parameters;  // a format-1 recording's whole scene
     parameters.kind = ClothEvent::Kind::parameters;
-    parameters.scene_toml = "name = \"quote \\\" backslash \\\\\"\n[solver]\ndt = 0.0005\n";
+    Scene whole;
+    whole.name = "quote \" backslash \\";
+    whole.solver.dt = 0.0005;
+    parameters.scene = std::make_shared<const Scene>(whole);
+    // Every type an edit's value can have, each to the last bit.
+    ClothEvent edit;
+    edit.kind = ClothEvent::Kind::edit;
+    edit.edits = {
+        {SceneKey::shear_stiffness, 0.1 + 0.2},
+        {SceneKey::cloth_rows, std::int64_t{4194304}},
+        {SceneKey::bend_enabled, true},
+        {SceneKey::wind, Vec3d{1e-300, -0.30000000000000004, 7.0}},
+        {SceneKey::integrator, Integrator::velocity_verlet},
+        {SceneKey::cloth_layout, Layout::offset},
+        {SceneKey::cloth_orientation, Orientation::horizontal},
+        {SceneKey::collider_response, ContactResponse::repulsion, 3},
+        {SceneKey::cloth_pins, GridPins{PinPreset::list, {{0, 0}, {2, 7}}}},
+        {SceneKey::cloth_pins, GridPins{PinPreset::top_row, {}}},
+        {SceneKey::tear_max_stretch, FeatureOff{}},
+        {SceneKey::self_collision_thickness, 0.004},
+    };
     for (const ClothEvent& event : {grab, pull, plain_event(ClothEvent::Kind::let_go), cut, pin,
-                                    plain_event(ClothEvent::Kind::release_pins), parameters,
+                                    plain_event(ClothEvent::Kind::release_pins), parameters, edit,
                                     plain_event(ClothEvent::Kind::reset)})
         record.events.push_back({record.events.size() * 10, event});
     std::string error;
@@ -153,7 +173,11 @@ TEST(Session, ARecordingReadsBackFieldForField) {
         EXPECT_EQ(a.target, b.target);
         EXPECT_EQ(a.springs, b.springs);
         EXPECT_EQ(a.particle, b.particle);
-        EXPECT_EQ(a.scene_toml, b.scene_toml);
+        EXPECT_EQ(a.edits, b.edits);
+        ASSERT_EQ(a.scene == nullptr, b.scene == nullptr);
+        if (a.scene) {
+            EXPECT_TRUE(*a.scene == *b.scene);
+        }
     }
 }
 
@@ -162,7 +186,7 @@ TEST(Session, AMalformedRecordingIsRefusedWithAPosition) {
         "format = 1\nsteps = 100\nfinal_state_hash = \"0x0000000000000001\"\nscene = \"\"\n";
     const std::pair<std::string, std::string> cases[] = {
         {"format = 1\nsteps = \n", "s.toml:2:"},
-        {"format = 2\nsteps = 1\nfinal_state_hash = \"0x0000000000000001\"\nscene = \"\"\n",
+        {"format = 3\nsteps = 1\nfinal_state_hash = \"0x0000000000000001\"\nscene = \"\"\n",
          "s.toml:1:"},
         {"format = 1\nsteps = -1\n", "s.toml:2:"},
         {"format = 1\nsteps = 1\nfinal_state_hash = \"12\"\nscene = \"\"\n", "s.toml:3:"},
@@ -179,6 +203,23 @@ TEST(Session, AMalformedRecordingIsRefusedWithAPosition) {
         {good_head + "\n[[events]]\nstep = 5\nkind = \"parameters\"\nscene = \"[solver]\\ndt = "
                      "-1\\n\"\n",
          "dt"},
+        // Typed edits (format 2): a key no edit reaches, a value of the wrong type, none.
+        {good_head + "\n[[events]]\nstep = 5\nkind = \"edit\"\nedits = [{key = "
+                     "\"springs.shear.stifness\", value = 1.0}]\n",
+         "s.toml:9:"},
+        {good_head + "\n[[events]]\nstep = 5\nkind = \"edit\"\nedits = [{key = "
+                     "\"springs.shear.stifness\", value = 1.0}]\n",
+         "did you mean 'springs.shear.stiffness'"},
+        {good_head + "\n[[events]]\nstep = 5\nkind = \"edit\"\nedits = [{key = \"solver.dt\", "
+                     "value = \"fast\"}]\n",
+         "solver.dt must be a number"},
+        {good_head + "\n[[events]]\nstep = 5\nkind = \"edit\"\nedits = [{key = \"solver.dt\", "
+                     "value = \"fast\"}]\n",
+         "s.toml:9:"},
+        {good_head + "\n[[events]]\nstep = 5\nkind = \"edit\"\nedits = [{key = "
+                     "\"colliders.x.radius\", value = 1.0}]\n",
+         "s.toml:9:"},
+        {good_head + "\n[[events]]\nstep = 5\nkind = \"edit\"\nedits = []\n", "s.toml:9:"},
         {"format = 1\nsteps = 1\nfinal_state_hash = \"0x0000000000000001\"\nscene = \"[cloth]\\n"
          "rows = 0\\n\"\n",
          "rows"},
@@ -250,6 +291,79 @@ TEST(SideBySide, ACopyChangesOnlyItsOwnSolver) {
     EXPECT_TRUE(state.change_companion(0, {"solver.dt=0"}));
     EXPECT_TRUE(state.companions[0].simulation.scene() == before);
     EXPECT_TRUE(state.change_companion(3, {"solver.dt=0.001"}));
+}
+
+}  // namespace
+}  // namespace weft::app
+
+namespace weft::app {
+namespace {
+
+// A session of parameter changes only, as a user playing with the panel makes: 200 ticks of
+// a stiffness slider, a wind, a change of method, a new grid (a rebuilt cloth).
+std::vector<Scene> play_slider_ticks(DemoState& state) {
+    std::vector<Scene> after_each;  // the running scene after each change
+    auto change = [&](const std::vector<SceneEdit>& edits) {
+        ASSERT_FALSE(state.edit(edits));
+        after_each.push_back(state.simulation.scene());
+        state.step(3);
+    };
+    for (int tick = 0; tick < 200; ++tick)
+        change({{SceneKey::shear_stiffness, 100.0 + 1.5 * tick}});
+    change({{SceneKey::wind, Vec3d{2.0, 0.0, -1.0}}, {SceneKey::air_drag, 0.002}});
+    change({{SceneKey::integrator, Integrator::velocity_verlet}});
+    change({{SceneKey::cloth_rows, std::int64_t{14}},
+            {SceneKey::cloth_pins, GridPins{PinPreset::top_row, {}}}});
+    state.step(40);
+    return after_each;
+}
+
+// The same session as format 1 stored it: each change as kind = "parameters" with the whole
+// scene it made (`scenes`, one per edit event).
+SessionRecord as_format_one(const SessionRecord& typed, const std::vector<Scene>& scenes) {
+    SessionRecord whole = typed;
+    for (std::size_t e = 0; e < whole.events.size(); ++e) {
+        whole.events[e].event.kind = ClothEvent::Kind::parameters;
+        whole.events[e].event.edits.clear();
+        whole.events[e].event.scene = std::make_shared<const Scene>(scenes[e]);
+    }
+    return whole;
+}
+
+TEST(Session, TypedEditsMakeARecordingOfSliderTicksOverTenTimesSmaller) {
+    DemoState recorder = demo();
+    recorder.start_recording();
+    const std::vector<Scene> scenes = play_slider_ticks(recorder);
+    const SessionRecord typed = recorder.stop_recording();
+    ASSERT_EQ(typed.events.size(), scenes.size());
+    const SessionRecord whole = as_format_one(typed, scenes);
+    const std::size_t typed_bytes = session_to_toml(typed).size();
+    const std::size_t whole_bytes = session_to_toml(whole).size();
+    EXPECT_LT(10 * typed_bytes, whole_bytes) << typed_bytes << " against " << whole_bytes;
+    std::printf("203 parameter changes: %zu bytes typed, %zu bytes as whole scenes (%.1fx)\n",
+                typed_bytes, whole_bytes,
+                static_cast<double>(whole_bytes) / static_cast<double>(typed_bytes));
+}
+
+TEST(Session, AFormatOneRecordingOfWholeScenesStillReplaysBitForBit) {
+    DemoState recorder = demo();
+    recorder.start_recording();
+    const std::vector<Scene> scenes = play_slider_ticks(recorder);
+    const SessionRecord typed = recorder.stop_recording();
+    const SessionRecord whole = as_format_one(typed, scenes);
+    std::string text = session_to_toml(whole);
+    const std::size_t format = text.find("format = 2");
+    ASSERT_NE(format, std::string::npos);
+    text.replace(format, 10, "format = 1");
+    std::string error;
+    const std::optional<SessionRecord> read = session_from_toml(text, "old.toml", error);
+    ASSERT_TRUE(read) << error;
+    DemoState player = demo();
+    player.start_replay(*read);
+    while (!player.replay_finished()) player.step(64);
+    EXPECT_TRUE(player.replay_matches());
+    EXPECT_EQ(hash_state(player.simulation.cloth()), typed.final_state_hash);
+    EXPECT_EQ(player.simulation.cloth().rows, 14);
 }
 
 }  // namespace

@@ -225,7 +225,8 @@ Cloth build_mesh_cloth(const Scene& scene) {
     cloth.masses.resize(count);
     cloth.inverse_masses.resize(count);
     for (std::size_t p = 0; p < count; ++p) {
-        cloth.masses[p] = spec.density * topology.areas[p];
+        cloth.masses[p] =
+            spec.mesh_particle_mass ? spec.particle_mass : spec.density * topology.areas[p];
         cloth.inverse_masses[p] = 1.0 / cloth.masses[p];
     }
     if (spec.pin_preset == PinPreset::vertices)

@@ -46,9 +46,10 @@ std::optional<std::string> mesh_pin_problem(const ClothSpec& spec, const ObjMesh
 
 // The cloth of a scene whose cloth.mesh is loaded (scene_loader.h checks it): particles at
 // the vertices moved by cloth.origin, at rest; masses lumped from the triangles' areas times
-// cloth.density; the spring families the scene enables; pins from cloth.pin_vertices or
-// cloth.pin_group. Throws std::invalid_argument for a scene that did not pass the loader's
-// checks (no mesh loaded, pins that do not fit), ObjError as derive_mesh_topology does.
+// cloth.density, or cloth.particle_mass each when cloth.mesh_particle_mass; the spring
+// families the scene enables; pins from cloth.pin_vertices or cloth.pin_group. Throws
+// std::invalid_argument for a scene that did not pass the loader's checks (no mesh loaded, pins
+// that do not fit), ObjError as derive_mesh_topology does.
 Cloth build_mesh_cloth(const Scene& scene);
 
 }  // namespace weft

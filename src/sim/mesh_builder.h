@@ -7,6 +7,13 @@
 // col N-1" for vertex N; messages say "vertex N", particle_name in cloth.h), `spacing` is its
 // mean structural rest length, `mesh_extent` its size and `mesh_rest_shape` its vertices as
 // built.
+//
+// Except a mesh that is exactly a grid builder's sheet (rows × cols vertices in row-major
+// order at one spacing along two coordinate axes, one quad per cell in row order): that one
+// is built as the grid builder builds its sheet (cloth_builder.h): rows, cols and spacing of
+// the grid, the springs in the grid's order and colours, its triangles and stencil, and no
+// mesh extent or rest shape. Given the same masses (cloth.particle_mass) it then steps bit
+// for bit as the grid's sheet does, and hashes alike.
 #pragma once
 
 #include <optional>

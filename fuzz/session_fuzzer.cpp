@@ -25,16 +25,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     const weft::SceneLoadResult scene = weft::load_scene_text(record->scene_toml, "scene");
     if (!scene.ok()) std::abort();  // the reader checked it
-    const long long particles = static_cast<long long>(scene.scene->cloth.rows) * scene.scene->cloth.cols;
+    const long long particles =
+        static_cast<long long>(scene.scene->cloth.rows) * scene.scene->cloth.cols;
     if (particles > 1024 || record->steps > 4000) return 0;  // only slow, not wrong
     for (const auto& timed : record->events) {
         if (timed.event.kind == weft::app::ClothEvent::Kind::parameters) {
             if (!timed.event.scene) std::abort();  // the reader checked it
-            if (static_cast<long long>(timed.event.scene->cloth.rows) * timed.event.scene->cloth.cols > 1024)
+            if (static_cast<long long>(timed.event.scene->cloth.rows) *
+                    timed.event.scene->cloth.cols >
+                1024)
                 return 0;
         }
         for (const weft::SceneEdit& edit : timed.event.edits)  // a grid grown past the bound
-            if ((edit.key == weft::SceneKey::cloth_rows || edit.key == weft::SceneKey::cloth_cols) &&
+            if ((edit.key == weft::SceneKey::cloth_rows ||
+                 edit.key == weft::SceneKey::cloth_cols) &&
                 std::get<std::int64_t>(edit.value) > 32)
                 return 0;
     }

@@ -133,7 +133,7 @@ void materials(DemoState& state) {
         ImGui::PopID();
     }
     const ClothSpec& cloth = state.simulation.scene().cloth;
-    if (!cloth.mesh.empty()) {
+    if (!cloth.mesh.empty() && !cloth.mesh_particle_mass) {
         // A mesh's masses are lumped from its triangles' areas: its material has a density.
         double density = cloth.density;  // kg/m²
         if (slider_log("density (kg/m2)", density, 0.01, 100.0))

@@ -62,7 +62,8 @@ struct Cloth {
     // A mesh cloth (mesh_builder.h) is no grid: its particles count as one row (rows = 1,
     // cols = particle count), `spacing` is its mean structural rest length, and this is its
     // size, the diagonal of its rest shape's bounding box, m. 0 for the grid builders' cloths,
-    // whose size follows from rows, cols and spacing.
+    // whose size follows from rows, cols and spacing, and for a mesh that is exactly a grid
+    // builder's sheet, which is built as that sheet.
     double mesh_extent = 0.0;
     // A mesh cloth's vertices as built (origin applied), m: its rest shape, which a view lays
     // its texture on. Shared by copies (snapshots, companions); null for the grid builders'.

@@ -106,8 +106,7 @@ void add_families(const Scene& scene, Cloth& cloth, const NeighbourOffsets (&eve
 
 }  // namespace
 
-Cloth build_grid_cloth(const Scene& scene) {
-    Cloth cloth = place_particles(scene.cloth, 1.0, 0.0);
+void add_grid_topology(const Scene& scene, Cloth& cloth) {
     // Structural: right and down; shear: both diagonals; bend: two right and two down.
     const NeighbourOffsets families[3] = {{{0, 1}, {1, 0}}, {{1, 1}, {1, -1}}, {{0, 2}, {2, 0}}};
     add_families(scene, cloth, families, families);
@@ -122,6 +121,11 @@ Cloth build_grid_cloth(const Scene& scene) {
         }
     }
     build_grid_stencil(cloth);
+}
+
+Cloth build_grid_cloth(const Scene& scene) {
+    Cloth cloth = place_particles(scene.cloth, 1.0, 0.0);
+    add_grid_topology(scene, cloth);
     return cloth;
 }
 

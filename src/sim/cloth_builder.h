@@ -13,6 +13,12 @@ namespace weft {
 // Requires a validated scene.
 Cloth build_grid_cloth(const Scene& scene);
 
+// build_grid_cloth's topology on a cloth whose rows, cols and positions are set: the spring
+// families the scene enables, each in that order (and so coloured alike), rest lengths from
+// the positions, two triangles per cell and the grid stencil. The mesh builder gives a grid
+// written as OBJ these, so that it steps as the grid builder's sheet does.
+void add_grid_topology(const Scene& scene, Cloth& cloth);
+
 // The offset layout: odd rows shifted by half a spacing and rows √3/2 spacings apart, so
 // structural springs form equilateral triangles (six neighbours inside the sheet); shear
 // springs join particles √3 spacings apart, bend springs 2 spacings apart along the

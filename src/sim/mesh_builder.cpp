@@ -6,6 +6,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "sim/cloth_builder.h"
 #include "sim/spring_coloring.h"
 
 namespace weft {
@@ -127,6 +128,108 @@ SpringGroup make_group(SpringFamily family, const SpringFamilySpec& spec,
     return group;
 }
 
+// A mesh that is exactly a grid builder's sheet: see find_grid.
+struct MeshGrid {
+    int rows = 0;
+    int cols = 0;
+    double spacing = 0.0;  // m
+    // The quads wind (tl, tr, br, bl), against the grid's triangles (tl, bl, tr), (tr, bl,
+    // br): the file's front is the grid's back.
+    bool turned_over = false;
+};
+
+// Whether the quad is the cell whose top-left corner is `top_left`, wound either way and
+// starting at any corner: (tl, bl, br, tr) as the grid's triangles are, or turned over.
+std::optional<bool> cell_winding(const ObjFace& quad, std::uint32_t top_left, std::uint32_t cols) {
+    const std::uint32_t tl = top_left, tr = tl + 1, bl = tl + cols, br = bl + 1;
+    const auto& v = quad.vertices;
+    int start = 0;
+    while (start < 4 && v[start] != tl) ++start;
+    if (start == 4) return std::nullopt;
+    const std::uint32_t next = v[(start + 1) % 4], across = v[(start + 2) % 4],
+                        last = v[(start + 3) % 4];
+    if (across != br) return std::nullopt;
+    if (next == bl && last == tr) return false;
+    if (next == tr && last == bl) return true;
+    return std::nullopt;
+}
+
+// The mesh as the grid builder's rows × cols sheet, or nullopt. Exactly, not nearly: only
+// quads, one per cell in row-major order (cell (r, c) is face r (cols - 1) + c, its corners
+// vertices r cols + c, +1, +cols, +cols+1, all wound alike); and vertex r cols + c at
+// v₀ + c s u + r s w for the first vertex v₀, the spacing s = |v₁ - v₀| and u, w two
+// coordinate axes (either sign), each coordinate equal to the double that sum gives, as
+// the grid builder computes its particles (origin + (c s, -r s, 0) or (c s, 0, r s)). A
+// grid builder's sheet written with %.17g from its origin at 0 is found; a grid nudged by a
+// rounding, or a curved one, is not, and is built as any mesh is.
+std::optional<MeshGrid> find_grid(const ObjMesh& mesh) {
+    if (mesh.faces.empty()) return std::nullopt;
+    for (const ObjFace& face : mesh.faces)
+        if (face.count != 4) return std::nullopt;
+    // The first cell's corners, sorted, are 0, 1, cols and cols + 1.
+    auto first = mesh.faces[0].vertices;
+    std::sort(first.begin(), first.end());
+    const std::size_t count = mesh.vertices.size();
+    const std::uint32_t cols = first[2];
+    if (first[0] != 0 || first[1] != 1 || cols < 2 || first[3] != cols + 1 || count % cols != 0)
+        return std::nullopt;
+    const std::size_t rows = count / cols;
+    if (rows < 2 || mesh.faces.size() != (rows - 1) * (cols - 1)) return std::nullopt;
+    MeshGrid grid;
+    grid.rows = static_cast<int>(rows);
+    grid.cols = static_cast<int>(cols);
+    for (std::size_t r = 0; r + 1 < rows; ++r)
+        for (std::size_t c = 0; c + 1 < cols; ++c) {
+            const auto winding = cell_winding(mesh.faces[r * (cols - 1) + c],
+                                              static_cast<std::uint32_t>(r * cols + c), cols);
+            if (!winding || (r + c > 0 && *winding != grid.turned_over)) return std::nullopt;
+            grid.turned_over = *winding;
+        }
+    // The axes and the spacing: along a row the first step moves one coordinate only, down
+    // a column another, by as much.
+    const Vec3& corner = mesh.vertices[0];
+    const auto axis_of = [&](const Vec3& step) -> std::optional<int> {
+        int axis = -1;
+        for (int k = 0; k < 3; ++k)
+            if (step[k] != 0.0) {
+                if (axis >= 0) return std::nullopt;
+                axis = k;
+            }
+        return axis >= 0 ? std::optional<int>(axis) : std::nullopt;
+    };
+    const Vec3 along = mesh.vertices[1] - corner, down = mesh.vertices[cols] - corner;  // m
+    const auto across_axis = axis_of(along), down_axis = axis_of(down);
+    if (!across_axis || !down_axis || *across_axis == *down_axis) return std::nullopt;
+    const double spacing = std::abs(along[*across_axis]);  // m
+    if (!std::isfinite(spacing) || std::abs(down[*down_axis]) != spacing) return std::nullopt;
+    const double across_sign = along[*across_axis] > 0.0 ? 1.0 : -1.0;
+    const double down_sign = down[*down_axis] > 0.0 ? 1.0 : -1.0;
+    for (std::size_t r = 0; r < rows; ++r)
+        for (std::size_t c = 0; c < cols; ++c) {
+            const Vec3& x = mesh.vertices[r * cols + c];
+            for (int k = 0; k < 3; ++k) {
+                // The grid builder's sum: the corner plus the offset (c s or r s, signed).
+                double offset = 0.0;
+                if (k == *across_axis) offset = across_sign * (static_cast<double>(c) * spacing);
+                if (k == *down_axis) offset = down_sign * (static_cast<double>(r) * spacing);
+                if (!(x[k] == corner[k] + offset)) return std::nullopt;
+            }
+        }
+    grid.spacing = spacing;
+    return grid;
+}
+
+// Every vertex's share of the triangles it is a corner of: a third of each one's area, m².
+std::vector<double> lumped_areas(const ObjMesh& mesh, const std::vector<Triangle>& triangles) {
+    std::vector<double> areas(mesh.vertices.size(), 0.0);
+    for (const Triangle& t : triangles) {
+        const Vec3 &pa = mesh.vertices[t.a], &pb = mesh.vertices[t.b], &pc = mesh.vertices[t.c];
+        const double area = 0.5 * glm::length(glm::cross(pb - pa, pc - pa));  // m²
+        for (const std::uint32_t corner : {t.a, t.b, t.c}) areas[corner] += area / 3.0;
+    }
+    return areas;
+}
+
 }  // namespace
 
 MeshTopology derive_mesh_topology(const ObjMesh& mesh) {
@@ -205,27 +308,57 @@ Cloth build_mesh_cloth(const Scene& scene) {
         throw std::invalid_argument("build_mesh_cloth: cloth.mesh " + spec.mesh + " is not loaded");
     const ObjMesh& mesh = *spec.mesh_data.obj;
     if (auto problem = mesh_pin_problem(spec, mesh)) throw std::invalid_argument(*problem);
-    MeshTopology topology = derive_mesh_topology(mesh);
+    MeshTopology topology = derive_mesh_topology(mesh);  // its checks hold for a grid too
+    const std::optional<MeshGrid> grid = find_grid(mesh);
 
     Cloth cloth;
     const std::size_t count = mesh.vertices.size();
-    cloth.rows = 1;
-    cloth.cols = static_cast<int>(count);
     const Vec3 origin(spec.origin[0], spec.origin[1], spec.origin[2]);
     cloth.positions.resize(count);
-    Vec3 low = mesh.vertices[0], high = mesh.vertices[0];
-    for (std::size_t p = 0; p < count; ++p) {
-        cloth.positions[p] = mesh.vertices[p] + origin;
-        low = glm::min(low, mesh.vertices[p]);
-        high = glm::max(high, mesh.vertices[p]);
-    }
-    cloth.mesh_extent = glm::length(high - low);
-    cloth.mesh_rest_shape = std::make_shared<const std::vector<Vec3>>(cloth.positions);
+    for (std::size_t p = 0; p < count; ++p) cloth.positions[p] = mesh.vertices[p] + origin;
     cloth.velocities.assign(count, Vec3(0.0));
+
+    if (grid) {
+        // The grid builder's sheet: its rows, spacing, springs in its order (so coloured
+        // alike, and summed alike), rest lengths from the positions as placed, triangles and
+        // stencil; no mesh extent or rest shape, so that guards, solvers and dumps see a grid.
+        cloth.rows = grid->rows;
+        cloth.cols = grid->cols;
+        cloth.spacing = grid->spacing;
+        add_grid_topology(scene, cloth);
+        if (grid->turned_over)  // keep the file's front: (tl, bl, tr) becomes (tl, tr, bl)
+            for (Triangle& t : cloth.triangles) std::swap(t.b, t.c);
+        topology.areas = lumped_areas(mesh, cloth.triangles);
+    } else {
+        cloth.rows = 1;
+        cloth.cols = static_cast<int>(count);
+        Vec3 low = mesh.vertices[0], high = mesh.vertices[0];
+        for (const Vec3& x : mesh.vertices) {
+            low = glm::min(low, x);
+            high = glm::max(high, x);
+        }
+        cloth.mesh_extent = glm::length(high - low);
+        cloth.mesh_rest_shape = std::make_shared<const std::vector<Vec3>>(cloth.positions);
+        double total_rest = 0.0;
+        for (const Spring& spring : topology.structural) total_rest += spring.rest_length;
+        cloth.spacing = total_rest / static_cast<double>(topology.structural.size());
+        cloth.spring_groups.push_back(make_group(SpringFamily::structural, scene.structural,
+                                                 std::move(topology.structural), count));
+        if (scene.shear.enabled)
+            cloth.spring_groups.push_back(
+                make_group(SpringFamily::shear, scene.shear, std::move(topology.shear), count));
+        if (scene.bend.enabled)
+            cloth.spring_groups.push_back(
+                make_group(SpringFamily::bend, scene.bend, std::move(topology.bend), count));
+        cloth.triangles = std::move(topology.triangles);
+        // No grid stencil: the structured passes are for grids (grid_stencil.h).
+    }
+
     cloth.masses.resize(count);
     cloth.inverse_masses.resize(count);
     for (std::size_t p = 0; p < count; ++p) {
-        cloth.masses[p] = spec.density * topology.areas[p];
+        cloth.masses[p] =
+            spec.mesh_particle_mass ? spec.particle_mass : spec.density * topology.areas[p];
         cloth.inverse_masses[p] = 1.0 / cloth.masses[p];
     }
     if (spec.pin_preset == PinPreset::vertices)
@@ -236,20 +369,6 @@ Cloth build_mesh_cloth(const Scene& scene) {
             cloth.inverse_masses[p] = 0.0;
     for (std::size_t p = 0; p < count; ++p)
         if (cloth.inverse_masses[p] == 0.0) cloth.pinned.push_back(static_cast<std::uint32_t>(p));
-
-    double total_rest = 0.0;
-    for (const Spring& spring : topology.structural) total_rest += spring.rest_length;
-    cloth.spacing = total_rest / static_cast<double>(topology.structural.size());
-    cloth.spring_groups.push_back(make_group(SpringFamily::structural, scene.structural,
-                                             std::move(topology.structural), count));
-    if (scene.shear.enabled)
-        cloth.spring_groups.push_back(
-            make_group(SpringFamily::shear, scene.shear, std::move(topology.shear), count));
-    if (scene.bend.enabled)
-        cloth.spring_groups.push_back(
-            make_group(SpringFamily::bend, scene.bend, std::move(topology.bend), count));
-    cloth.triangles = std::move(topology.triangles);
-    // No grid stencil: the structured passes are for grids (grid_stencil.h).
     return cloth;
 }
 

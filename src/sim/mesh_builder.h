@@ -7,6 +7,13 @@
 // col N-1" for vertex N; messages say "vertex N", particle_name in cloth.h), `spacing` is its
 // mean structural rest length, `mesh_extent` its size and `mesh_rest_shape` its vertices as
 // built.
+//
+// Except a mesh that is exactly a grid builder's sheet (rows × cols vertices in row-major
+// order at one spacing along two coordinate axes, one quad per cell in row order): that one
+// is built as the grid builder builds its sheet (cloth_builder.h): rows, cols and spacing of
+// the grid, the springs in the grid's order and colours, its triangles and stencil, and no
+// mesh extent or rest shape. Given the same masses (cloth.particle_mass) it then steps bit
+// for bit as the grid's sheet does, and hashes alike.
 #pragma once
 
 #include <optional>
@@ -46,9 +53,10 @@ std::optional<std::string> mesh_pin_problem(const ClothSpec& spec, const ObjMesh
 
 // The cloth of a scene whose cloth.mesh is loaded (scene_loader.h checks it): particles at
 // the vertices moved by cloth.origin, at rest; masses lumped from the triangles' areas times
-// cloth.density; the spring families the scene enables; pins from cloth.pin_vertices or
-// cloth.pin_group. Throws std::invalid_argument for a scene that did not pass the loader's
-// checks (no mesh loaded, pins that do not fit), ObjError as derive_mesh_topology does.
+// cloth.density, or cloth.particle_mass each when cloth.mesh_particle_mass; the spring
+// families the scene enables; pins from cloth.pin_vertices or cloth.pin_group. Throws
+// std::invalid_argument for a scene that did not pass the loader's checks (no mesh loaded, pins
+// that do not fit), ObjError as derive_mesh_topology does.
 Cloth build_mesh_cloth(const Scene& scene);
 
 }  // namespace weft

@@ -63,11 +63,13 @@ struct ClothSpec {
     PinPreset pin_preset = PinPreset::top_corners;
     std::vector<GridIndex> pin_list;  // used when pin_preset == list
 
-    // Instead of a grid, a triangle mesh (mesh_builder.h). Then rows, cols, spacing,
-    // particle_mass, layout and orientation do not apply, and pins are none, vertices or group.
+    // Instead of a grid, a triangle mesh (mesh_builder.h). Then rows, cols, spacing, layout
+    // and orientation do not apply, pins are none, vertices or group, and the masses come
+    // from density, or from particle_mass when mesh_particle_mass.
     std::string mesh;                        // OBJ path, absolute once loaded; "" = a grid
     LoadedMesh mesh_data;                    // the OBJ, set by the scene loader
     double density = 0.2;                    // kg/m², mass per area of the mesh (> 0)
+    bool mesh_particle_mass = false;         // particle_mass given: every vertex weighs that
     std::vector<std::int64_t> pin_vertices;  // vertex numbers as in the OBJ (1-based)
     std::string pin_group;                   // an OBJ group (g or o) whose vertices are pinned
 

@@ -45,8 +45,8 @@ constexpr SceneKey all_keys[] = {
 };
 static_assert(std::size(all_keys) == scene_key_names.size());
 
-bool is_grid_key(SceneKey key) {
-    return key <= SceneKey::cloth_pins;  // rows .. pins: what only a grid has
+bool is_grid_key(SceneKey key) {  // what only a grid has
+    return key <= SceneKey::cloth_pins && key != SceneKey::cloth_particle_mass;
 }
 
 // The family a springs.* key edits.
@@ -167,6 +167,11 @@ std::optional<std::string> edit_problem(const Scene& scene, const SceneEdit& edi
     const bool mesh = !scene.cloth.mesh.empty();
     if (is_grid_key(edit.key) && mesh) return not_for_mesh(name);
     if (edit.key == SceneKey::cloth_density && !mesh) return only_for_mesh(name);
+    // A mesh is weighed one way, by density or by particle_mass, as its file chose.
+    const bool weighed_alike = scene.cloth.mesh_particle_mass;
+    if (mesh && ((edit.key == SceneKey::cloth_density && weighed_alike) ||
+                 (edit.key == SceneKey::cloth_particle_mass && !weighed_alike)))
+        return both_mesh_masses();
     if (is_collider_key(edit.key) && edit.collider >= scene.colliders.size())
         return "there is no collider " + std::to_string(edit.collider) + " (the scene has " +
                std::to_string(scene.colliders.size()) + ")";
@@ -407,6 +412,9 @@ std::optional<std::vector<SceneEdit>> scene_edits_between(const Scene& from, con
     Scene reached = from;
     for (SceneKey key : all_keys) {
         if (mesh ? is_grid_key(key) : key == SceneKey::cloth_density) continue;
+        if (mesh && key == (from.cloth.mesh_particle_mass ? SceneKey::cloth_density
+                                                          : SceneKey::cloth_particle_mass))
+            continue;
         const std::uint32_t count =
             is_collider_key(key) ? static_cast<std::uint32_t>(from.colliders.size()) : 1;
         for (std::uint32_t c = 0; c < count; ++c) {

@@ -79,8 +79,14 @@ std::optional<std::string> structural_enabled_problem(bool enabled) {
 
 std::string not_for_mesh(std::string_view key) {
     return std::string(key) +
-           " does not apply with cloth.mesh: the mesh's vertices are the particles, their "
-           "masses come from cloth.density";
+           " does not apply with cloth.mesh: the mesh's vertices are the particles, where the "
+           "file puts them";
+}
+
+std::string both_mesh_masses() {
+    return "cloth.density and cloth.particle_mass cannot both be given: density lumps the "
+           "masses from the triangles' areas, particle_mass gives every vertex the same; "
+           "choose one";
 }
 
 std::string only_for_mesh(std::string_view key) {

@@ -69,6 +69,8 @@ std::optional<std::string> structural_enabled_problem(bool enabled);
 // or a mesh's key (density, pin_group) on a grid.
 std::string not_for_mesh(std::string_view key);
 std::string only_for_mesh(std::string_view key);
+// A mesh weighed both ways: by cloth.density and by cloth.particle_mass.
+std::string both_mesh_masses();
 
 // A number as messages write it (shortest form that reads back well enough to recognise).
 std::string format_number(double value);

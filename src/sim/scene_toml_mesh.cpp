@@ -56,7 +56,7 @@ void read_mesh_pins(TomlReader& reader, const toml::table& cloth, ClothSpec& spe
 }  // namespace
 
 void read_mesh_keys(TomlReader& reader, const toml::table& cloth, ClothSpec& spec) {
-    for (const char* key : {"rows", "cols", "spacing", "particle_mass", "layout", "orientation"})
+    for (const char* key : {"rows", "cols", "spacing", "layout", "orientation"})
         if (const toml::node* node = cloth.get(key)) {
             reader.fail(*node, std::string("cloth.") + key,
                         not_for_mesh(std::string("cloth.") + key));
@@ -67,7 +67,20 @@ void read_mesh_keys(TomlReader& reader, const toml::table& cloth, ClothSpec& spe
         reader.fail(*cloth.get("mesh"), "cloth.mesh", "cloth.mesh must name an OBJ file");
         return;
     }
-    reader.read_number(cloth, "cloth", "density", spec.density, scene_rules::density);
+    // Two ways to weigh the vertices: lumped from the triangles' areas (density), or all
+    // alike (particle_mass), as the grid builder weighs its particles, so that a grid
+    // written as OBJ can be the same material as the grid's sheet.
+    const toml::node* particle_mass = cloth.get("particle_mass");
+    if (particle_mass && cloth.get("density")) {
+        reader.fail(*particle_mass, "cloth.particle_mass", both_mesh_masses());
+        return;
+    }
+    spec.mesh_particle_mass = particle_mass != nullptr;
+    if (particle_mass)
+        reader.read_number(cloth, "cloth", "particle_mass", spec.particle_mass,
+                           scene_rules::particle_mass);
+    else
+        reader.read_number(cloth, "cloth", "density", spec.density, scene_rules::density);
     reader.read_vec3(cloth, "cloth", "origin", spec.origin);
     read_mesh_pins(reader, cloth, spec);
 }

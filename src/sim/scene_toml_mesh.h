@@ -12,8 +12,8 @@
 
 namespace weft {
 
-// The keys of [cloth] when it has `mesh`: mesh, density, origin, pins ("none" or vertex
-// numbers), pin_group. The grid's keys are refused with it.
+// The keys of [cloth] when it has `mesh`: mesh, density or particle_mass (not both), origin,
+// pins ("none" or vertex numbers), pin_group. The grid's other keys are refused with it.
 void read_mesh_keys(TomlReader& reader, const toml::table& cloth, ClothSpec& spec);
 
 // Reads the OBJ that cloth.mesh names, relative to the folder of `source_name` (the scene

@@ -42,7 +42,10 @@ void grid_cloth(std::ostringstream& out, const ClothSpec& cloth) {
 // A mesh's keys: the grid's do not apply (the loader refuses them beside `mesh`).
 void mesh_cloth(std::ostringstream& out, const ClothSpec& cloth) {
     out << "mesh = " << toml_string(cloth.mesh) << "\n";
-    out << "density = " << toml_number(cloth.density) << "  # kg/m²\n";
+    if (cloth.mesh_particle_mass)
+        out << "particle_mass = " << toml_number(cloth.particle_mass) << "  # kg, every vertex\n";
+    else
+        out << "density = " << toml_number(cloth.density) << "  # kg/m²\n";
     out << "origin = " << vec3(cloth.origin) << "  # m\n";
     if (cloth.pin_preset == PinPreset::group) {
         out << "pin_group = " << toml_string(cloth.pin_group) << "\n";

@@ -104,9 +104,8 @@ TEST_F(SceneWithMesh, RefusesPinsThatAreNotInTheMesh) {
 }
 
 TEST_F(SceneWithMesh, RefusesTheGridsKeysBesideAMesh) {
-    for (const std::string key :
-         {"rows = 3", "cols = 3", "layout = \"grid\"", "orientation = \"vertical\"",
-          "spacing = 0.1", "particle_mass = 0.1"}) {
+    for (const std::string key : {"rows = 3", "cols = 3", "layout = \"grid\"",
+                                  "orientation = \"vertical\"", "spacing = 0.1"}) {
         const SceneError error = error_of("mesh = \"meshes/square.obj\"\n" + key + "\n");
         EXPECT_TRUE(error.where.starts_with(scene_path() + ":3:")) << error.message();
         EXPECT_TRUE(contains(error.what, "does not apply with cloth.mesh")) << error.what;
@@ -118,6 +117,38 @@ TEST_F(SceneWithMesh, RefusesTheGridsKeysBesideAMesh) {
     EXPECT_TRUE(contains(density.what, "only to a mesh")) << density.what;
     EXPECT_TRUE(
         contains(error_of("mesh = \"meshes/square.obj\"\ndensity = 0\n").what, "cloth.density"));
+}
+
+// particle_mass instead of density: every vertex weighs the same, as a grid's particles do;
+// both at once are refused at the second, and so is a mass that is not positive.
+TEST_F(SceneWithMesh, WeighsEveryVertexAlikeGivenParticleMass) {
+    SceneLoadResult result = load("mesh = \"meshes/square.obj\"\nparticle_mass = 0.02\n");
+    ASSERT_TRUE(result.ok()) << result.error->message();
+    EXPECT_TRUE(result.scene->cloth.mesh_particle_mass);
+    const Cloth cloth = build_cloth(*result.scene);
+    EXPECT_EQ(cloth.masses, std::vector<double>(4, 0.02));
+    EXPECT_EQ(cloth.inverse_masses, std::vector<double>(4, 1.0 / 0.02));
+    const std::string text = scene_to_toml(*result.scene);
+    EXPECT_TRUE(contains(text, "particle_mass = 0.02")) << text;
+    EXPECT_FALSE(contains(text, "density")) << text;
+    SceneLoadResult again = load_scene_text(text, "panel");
+    ASSERT_TRUE(again.ok()) << again.error->message() << "\n" << text;
+    EXPECT_EQ(*again.scene, *result.scene);
+    // Without it, density as before.
+    SceneLoadResult density = load("mesh = \"meshes/square.obj\"\n");
+    ASSERT_TRUE(density.ok()) << density.error->message();
+    EXPECT_FALSE(density.scene->cloth.mesh_particle_mass);
+    EXPECT_FALSE(*density.scene == *result.scene);
+
+    SceneError both =
+        error_of("mesh = \"meshes/square.obj\"\ndensity = 0.5\nparticle_mass = 0.02\n");
+    EXPECT_EQ(both.where, scene_path() + ":4:17");
+    EXPECT_TRUE(contains(both.what, "cannot both be given")) << both.what;
+    both = error_of("mesh = \"meshes/square.obj\"\ndensity = 0.5\n", {"cloth.particle_mass=0.02"});
+    EXPECT_EQ(both.where, "--set cloth.particle_mass");
+    const SceneError zero = error_of("mesh = \"meshes/square.obj\"\nparticle_mass = 0\n");
+    EXPECT_EQ(zero.where, scene_path() + ":3:17");
+    EXPECT_TRUE(contains(zero.what, "cloth.particle_mass")) << zero.what;
 }
 
 TEST_F(SceneWithMesh, ABadMeshIsRefusedAtItsOwnLine) {

@@ -12,11 +12,11 @@ PlainClothOf<Real>::PlainClothOf(const Cloth& cloth, const ForceField& field) {
             particle.position[k] = static_cast<Real>(cloth.positions[p][k]);
             particle.velocity[k] = static_cast<Real>(cloth.velocities[p][k]);
         }
-        particle.mass = static_cast<Real>(cloth.masses[p]);
+        particle.mass = static_cast<Real>(cloth.topology().masses[p]);
         particle.pinned = cloth.is_pinned(p);
         particles_.push_back(particle);
     }
-    for (const SpringGroup& group : cloth.spring_groups)
+    for (const SpringGroup& group : cloth.topology().spring_groups)
         for (const Spring& s : group.springs)
             springs_.push_back(
                 {static_cast<int>(s.i), static_cast<int>(s.j), static_cast<Real>(group.stiffness),

@@ -14,11 +14,11 @@ XpbdCloth::XpbdCloth(const Cloth& cloth, const ForceField& field, bool spring_da
     for (std::size_t p = 0; p < count; ++p) {
         positions_.emplace_back(cloth.positions[p]);
         velocities_.emplace_back(cloth.velocities[p]);
-        inverse_masses_.push_back(static_cast<float>(cloth.inverse_masses[p]));
-        drag_rates_.push_back(static_cast<float>(field.air_drag / cloth.masses[p]));
+        inverse_masses_.push_back(static_cast<float>(cloth.topology().inverse_masses[p]));
+        drag_rates_.push_back(static_cast<float>(field.air_drag / cloth.topology().masses[p]));
     }
     previous_positions_ = positions_;
-    for (const SpringGroup& group : cloth.spring_groups) {
+    for (const SpringGroup& group : cloth.topology().spring_groups) {
         Family family{static_cast<float>(1.0 / group.stiffness),
                       spring_damping ? static_cast<float>(group.damping) : 0.0f,
                       {}};

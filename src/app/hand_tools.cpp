@@ -93,7 +93,7 @@ std::vector<std::uint64_t> springs_along_stroke(const Cloth& cloth, const Screen
                                                 const ScreenPoints& now, const glm::vec2& from,
                                                 const glm::vec2& to) {
     std::vector<std::uint64_t> crossed;
-    for (const SpringGroup& group : cloth.spring_groups)
+    for (const SpringGroup& group : cloth.topology().spring_groups)
         for (const Spring& spring : group.springs) {
             const auto &a0 = before[spring.i], &b0 = before[spring.j];
             const auto &a1 = now[spring.i], &b1 = now[spring.j];

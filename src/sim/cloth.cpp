@@ -1,5 +1,7 @@
 #include "sim/cloth.h"
 
+#include <atomic>
+
 #include "sim/scene.h"
 
 namespace weft {
@@ -14,16 +16,25 @@ std::string particle_name(const Cloth& cloth, std::size_t p) {
     return "particle (row " + std::to_string(p / cols) + ", col " + std::to_string(p % cols) + ")";
 }
 
-std::size_t Cloth::spring_count() const {
+std::size_t ClothTopology::spring_count() const {
     std::size_t count = 0;
     for (const SpringGroup& group : spring_groups) count += group.springs.size();
     return count;
 }
 
-const SpringGroup* Cloth::find_group(SpringFamily family) const {
+const SpringGroup* ClothTopology::find_group(SpringFamily family) const {
     for (const SpringGroup& group : spring_groups)
         if (group.family == family) return &group;
     return nullptr;
+}
+
+ClothTopology& Cloth::edit_topology() {
+    // Versions come from one counter for every cloth, so no two topologies that ever
+    // differed share one.
+    static std::atomic<std::uint64_t> next_version{1};
+    if (topology_.use_count() > 1) topology_ = std::make_shared<ClothTopology>(*topology_);
+    topology_->version = next_version.fetch_add(1, std::memory_order_relaxed);
+    return *topology_;
 }
 
 }  // namespace weft

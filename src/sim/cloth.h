@@ -53,6 +53,32 @@ struct Triangle {
     std::uint32_t a, b, c;  // particle indices, counter-clockwise seen from the front side
 };
 
+// What a cloth is made of, as opposed to where it is: particles' masses and pins, springs
+// grouped by family, triangles, and the grid stencil where there is one. Shared, immutable,
+// between every copy of a cloth (recovery snapshots, rollbacks, runs side by side): a copy
+// costs its state only. Whatever changes it (a tear, a cut, a pin, a new material) goes
+// through Cloth::edit_topology, which copies it first if another cloth still holds it, and
+// gives it a new version.
+struct ClothTopology {
+    // Per-particle constants.
+    std::vector<double> masses;          // kg
+    std::vector<double> inverse_masses;  // 1/kg; 0 for a pinned particle, which never moves
+    std::vector<std::uint32_t> pinned;   // indices of pinned particles, ascending
+
+    std::vector<SpringGroup> spring_groups;  // only the families present
+    std::vector<Triangle> triangles;         // for drawing; two per grid cell
+    // The same springs as per-direction grid stencils, for the structured force pass; empty
+    // for a cloth that is not a plain grid (grid_stencil.h).
+    GridStencil grid_stencil;
+
+    // Different for every edit of any topology, in any cloth: what views and caches compare
+    // to notice a change (a torn spring, a pin), instead of counting.
+    std::uint64_t version = 0;
+
+    std::size_t spring_count() const;
+    const SpringGroup* find_group(SpringFamily family) const;
+};
+
 struct Cloth {
     int rows = 0;  // grid rows the cloth was built from (particle = row * cols + col)
     int cols = 0;
@@ -62,8 +88,7 @@ struct Cloth {
     // A mesh cloth (mesh_builder.h) is no grid: its particles count as one row (rows = 1,
     // cols = particle count), `spacing` is its mean structural rest length, and this is its
     // size, the diagonal of its rest shape's bounding box, m. 0 for the grid builders' cloths,
-    // whose size follows from rows, cols and spacing, and for a mesh that is exactly a grid
-    // builder's sheet, which is built as that sheet.
+    // whose size follows from rows, cols and spacing.
     double mesh_extent = 0.0;
     // A mesh cloth's vertices as built (origin applied), m: its rest shape, which a view lays
     // its texture on. Shared by copies (snapshots, companions); null for the grid builders'.
@@ -73,26 +98,28 @@ struct Cloth {
     std::vector<Vec3> positions;   // m
     std::vector<Vec3> velocities;  // m/s
 
-    // Per-particle constants.
-    std::vector<double> masses;          // kg
-    std::vector<double> inverse_masses;  // 1/kg; 0 for a pinned particle, which never moves
-    std::vector<std::uint32_t> pinned;   // indices of pinned particles, ascending
-
-    // Topology.
-    std::vector<SpringGroup> spring_groups;  // only the families present
-    std::vector<Triangle> triangles;         // for drawing; two per grid cell
-    // The same springs as per-direction grid stencils, for the structured force pass; empty
-    // for a cloth that is not a plain grid (grid_stencil.h).
-    GridStencil grid_stencil;
+    // The topology, shared with every copy of this cloth until one of them edits it.
+    const ClothTopology& topology() const { return *topology_; }
+    // The topology to change: this cloth's own (copied first if shared), with a new version.
+    ClothTopology& edit_topology();
+    // How many cloths hold this topology (1: only this one), for tests and measurements.
+    long topology_holders() const { return topology_.use_count(); }
 
     std::size_t particle_count() const { return positions.size(); }
     bool is_mesh() const { return mesh_extent > 0.0; }  // built from a mesh (mesh_builder.h)
     // m: the rest shape's longest side: a grid's longer edge, a mesh's bounding-box diagonal.
     // How far the cloth can reach from a point it hangs by, give or take.
     double rest_span() const { return is_mesh() ? mesh_extent : std::max(rows, cols) * spacing; }
-    std::size_t spring_count() const;
-    bool is_pinned(std::size_t particle) const { return inverse_masses[particle] == 0.0; }
-    const SpringGroup* find_group(SpringFamily family) const;
+    std::size_t spring_count() const { return topology_->spring_count(); }
+    bool is_pinned(std::size_t particle) const {
+        return topology_->inverse_masses[particle] == 0.0;
+    }
+    const SpringGroup* find_group(SpringFamily family) const {
+        return topology_->find_group(family);
+    }
+
+  private:
+    std::shared_ptr<ClothTopology> topology_ = std::make_shared<ClothTopology>();
 };
 
 }  // namespace weft

@@ -55,8 +55,9 @@ Cloth place_particles(const ClothSpec& spec, double row_pitch, double odd_row_sh
     const std::size_t count = static_cast<std::size_t>(spec.rows) * spec.cols;
     cloth.positions.resize(count);
     cloth.velocities.assign(count, Vec3(0.0));
-    cloth.masses.assign(count, spec.particle_mass);
-    cloth.inverse_masses.assign(count, 1.0 / spec.particle_mass);
+    ClothTopology& topology = cloth.edit_topology();
+    topology.masses.assign(count, spec.particle_mass);
+    topology.inverse_masses.assign(count, 1.0 / spec.particle_mass);
     const Vec3 origin = to_vec3(spec.origin);
     for (int r = 0; r < spec.rows; ++r) {
         for (int c = 0; c < spec.cols; ++c) {
@@ -68,7 +69,7 @@ Cloth place_particles(const ClothSpec& spec, double row_pitch, double odd_row_sh
         }
     }
     auto pin = [&](int r, int c) {
-        cloth.inverse_masses[static_cast<std::size_t>(r) * spec.cols + c] = 0.0;
+        topology.inverse_masses[static_cast<std::size_t>(r) * spec.cols + c] = 0.0;
     };
     switch (spec.pin_preset) {
         case PinPreset::none:
@@ -88,20 +89,20 @@ Cloth place_particles(const ClothSpec& spec, double row_pitch, double odd_row_sh
             break;
     }
     for (std::size_t i = 0; i < count; ++i)
-        if (cloth.inverse_masses[i] == 0.0) cloth.pinned.push_back(static_cast<std::uint32_t>(i));
+        if (topology.inverse_masses[i] == 0.0)
+            topology.pinned.push_back(static_cast<std::uint32_t>(i));
     return cloth;
 }
 
 void add_families(const Scene& scene, Cloth& cloth, const NeighbourOffsets (&even)[3],
                   const NeighbourOffsets (&odd)[3]) {
-    cloth.spring_groups.push_back(
+    std::vector<SpringGroup>& groups = cloth.edit_topology().spring_groups;
+    groups.push_back(
         make_group(SpringFamily::structural, scene.structural, cloth, even[0], odd[0]));
     if (scene.shear.enabled)
-        cloth.spring_groups.push_back(
-            make_group(SpringFamily::shear, scene.shear, cloth, even[1], odd[1]));
+        groups.push_back(make_group(SpringFamily::shear, scene.shear, cloth, even[1], odd[1]));
     if (scene.bend.enabled)
-        cloth.spring_groups.push_back(
-            make_group(SpringFamily::bend, scene.bend, cloth, even[2], odd[2]));
+        groups.push_back(make_group(SpringFamily::bend, scene.bend, cloth, even[2], odd[2]));
 }
 
 }  // namespace
@@ -110,14 +111,15 @@ void add_grid_topology(const Scene& scene, Cloth& cloth) {
     // Structural: right and down; shear: both diagonals; bend: two right and two down.
     const NeighbourOffsets families[3] = {{{0, 1}, {1, 0}}, {{1, 1}, {1, -1}}, {{0, 2}, {2, 0}}};
     add_families(scene, cloth, families, families);
+    std::vector<Triangle>& triangles = cloth.edit_topology().triangles;
     for (int r = 0; r + 1 < cloth.rows; ++r) {
         for (int c = 0; c + 1 < cloth.cols; ++c) {
             const auto top_left = static_cast<std::uint32_t>(r * cloth.cols + c);
             const auto top_right = top_left + 1;
             const auto bottom_left = top_left + static_cast<std::uint32_t>(cloth.cols);
             const auto bottom_right = bottom_left + 1;
-            cloth.triangles.push_back({top_left, bottom_left, top_right});
-            cloth.triangles.push_back({top_right, bottom_left, bottom_right});
+            triangles.push_back({top_left, bottom_left, top_right});
+            triangles.push_back({top_right, bottom_left, bottom_right});
         }
     }
     build_grid_stencil(cloth);
@@ -142,17 +144,18 @@ Cloth build_offset_cloth(const Scene& scene) {
     const NeighbourOffsets odd[3] = {
         {{0, 1}, {1, 0}, {1, 1}}, {{2, 0}, {1, -1}, {1, 2}}, {{0, 2}, {2, -1}, {2, 1}}};
     add_families(scene, cloth, even, odd);
+    std::vector<Triangle>& triangles = cloth.edit_topology().triangles;
     const auto index = [&](int r, int c) { return static_cast<std::uint32_t>(r * cloth.cols + c); };
     for (int r = 0; r + 1 < cloth.rows; ++r) {
         const int shift = r % 2;  // the lower row's neighbours sit `shift` columns further right
         for (int c = 0; c + 1 < cloth.cols; ++c) {
             // Counter-clockwise seen from the front, like the grid's.
             if (shift == 0) {
-                cloth.triangles.push_back({index(r, c), index(r + 1, c), index(r, c + 1)});
-                cloth.triangles.push_back({index(r, c + 1), index(r + 1, c), index(r + 1, c + 1)});
+                triangles.push_back({index(r, c), index(r + 1, c), index(r, c + 1)});
+                triangles.push_back({index(r, c + 1), index(r + 1, c), index(r + 1, c + 1)});
             } else {
-                cloth.triangles.push_back({index(r, c), index(r + 1, c + 1), index(r, c + 1)});
-                cloth.triangles.push_back({index(r, c), index(r + 1, c), index(r + 1, c + 1)});
+                triangles.push_back({index(r, c), index(r + 1, c + 1), index(r, c + 1)});
+                triangles.push_back({index(r, c), index(r + 1, c), index(r + 1, c + 1)});
             }
         }
     }

@@ -56,7 +56,7 @@ void accumulate_repulsion_forces(std::span<const Collider> colliders, const Clot
             Vec3 n;
             const double depth = repulsion_layer - signed_distance(collider, positions[p], n);
             if (depth <= 0.0) continue;
-            const double mass = cloth.masses[p];
+            const double mass = cloth.topology().masses[p];
             const double normal_speed = glm::dot(velocities[p], n);
             // Spring m ω² depth and a critically damped dashpot on the normal speed; the
             // contact only pushes, never pulls.
@@ -164,7 +164,7 @@ std::size_t move_onto_impulse_colliders(std::span<const Collider> colliders, Clo
                         moved.fetch_add(
                             move_onto_impulse_colliders(
                                 colliders, cloth.positions.data(), cloth.velocities.data(),
-                                cloth.inverse_masses.data(), first_block * block,
+                                cloth.topology().inverse_masses.data(), first_block * block,
                                 std::min(last_block * block, count), watch, respond),
                             std::memory_order_relaxed);
                     });

@@ -15,7 +15,7 @@ namespace weft {
 
 double largest_stretch_ratio(const Cloth& cloth, WorkerPool* pool) {
     double largest = -std::numeric_limits<double>::infinity();
-    for (const SpringGroup& group : cloth.spring_groups)
+    for (const SpringGroup& group : cloth.topology().spring_groups)
         largest = reduce_in_chunks(
             pool, group.springs.size(), largest,
             [&](std::size_t begin, std::size_t end) {
@@ -87,7 +87,7 @@ bool maybe_diverged(const Cloth& cloth, bool check_runaway_stretch, WorkerPool* 
     // A grid tests its springs per direction over rows; anything else spring by spring.
     if (auto suspect = grid_springs_maybe_longer_than(cloth, runaway_stretch_ratio, pool))
         return *suspect;
-    for (const SpringGroup& group : cloth.spring_groups) {
+    for (const SpringGroup& group : cloth.topology().spring_groups) {
         for_ranges(pool, group.springs.size(), [&](std::size_t begin, std::size_t end) {
             if (any_spring_maybe_runaway(group, cloth.positions.data(), begin, end))
                 found.store(true, std::memory_order_relaxed);
@@ -108,7 +108,7 @@ std::optional<std::string> find_divergence(const Cloth& cloth, bool check_runawa
             return particle_name(cloth, p) + " has a non-finite velocity";
     }
     if (!check_runaway_stretch) return std::nullopt;
-    for (const SpringGroup& group : cloth.spring_groups) {
+    for (const SpringGroup& group : cloth.topology().spring_groups) {
         for (const Spring& spring : group.springs) {
             const double length =
                 glm::length(cloth.positions[spring.j] - cloth.positions[spring.i]);
@@ -130,7 +130,7 @@ void DivergenceGuard::renew_reference(const Cloth& cloth, WorkerPool* pool) {
     double headroom = std::numeric_limits<double>::infinity();
     double scale = 0.0;
     std::mutex merge;
-    for (const SpringGroup& group : cloth.spring_groups) {
+    for (const SpringGroup& group : cloth.topology().spring_groups) {
         for_ranges(pool, group.springs.size(), [&](std::size_t begin, std::size_t end) {
             const Vec3* x = cloth.positions.data();
             double minimum = std::numeric_limits<double>::infinity(), longest = 0.0;

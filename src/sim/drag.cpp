@@ -37,7 +37,7 @@ void accumulate_drag_forces(const DragHandle& drag, const Cloth& cloth,
         Vec3 acceleration = omega * omega * (goal - positions[p]) - omega * velocities[p];
         const double magnitude = glm::length(acceleration);
         if (magnitude > drag.max_acceleration) acceleration *= drag.max_acceleration / magnitude;
-        forces[p] += (drag.weights[k] * cloth.masses[p]) * acceleration;
+        forces[p] += (drag.weights[k] * cloth.topology().masses[p]) * acceleration;
     }
 }
 

@@ -25,7 +25,7 @@ EnergyAndStretch measure_energy_and_stretch(const Cloth& cloth, const ForceField
             Energy part;
             for (std::size_t p = begin; p < end; ++p) {
                 if (cloth.is_pinned(p)) continue;
-                const double mass = cloth.masses[p];
+                const double mass = cloth.topology().masses[p];
                 part.kinetic += 0.5 * mass * glm::dot(cloth.velocities[p], cloth.velocities[p]);
                 part.gravitational -= mass * glm::dot(field.gravity, cloth.positions[p]);
             }
@@ -39,7 +39,7 @@ EnergyAndStretch measure_energy_and_stretch(const Cloth& cloth, const ForceField
         double largest = -std::numeric_limits<double>::infinity();
     };
     double largest = -std::numeric_limits<double>::infinity();
-    for (const SpringGroup& group : cloth.spring_groups) {
+    for (const SpringGroup& group : cloth.topology().spring_groups) {
         const SpringPart group_part = reduce_in_chunks(
             pool, group.springs.size(), SpringPart{},
             [&](std::size_t begin, std::size_t end) {

@@ -22,7 +22,7 @@ double wind_power(const Cloth& cloth, const ForceField& field) {
 double energy_scale(const Cloth& cloth, const ForceField& field) {
     double mass = 0.0;
     for (std::size_t p = 0; p < cloth.particle_count(); ++p)
-        if (!cloth.is_pinned(p)) mass += cloth.masses[p];
+        if (!cloth.is_pinned(p)) mass += cloth.topology().masses[p];
     const double diagonal =
         cloth.is_mesh()
             ? cloth.mesh_extent

@@ -62,7 +62,7 @@ void accumulate_spring_forces(const SpringGroup& group, std::span<const Vec3> po
 void accumulate_forces(const Cloth& cloth, const ForceField& field, std::span<const Vec3> positions,
                        std::span<const Vec3> velocities, std::span<Vec3> forces, WorkerPool* pool) {
     const std::size_t count = positions.size();
-    const double* mass = cloth.masses.data();
+    const double* mass = cloth.topology().masses.data();
     const Vec3* v = velocities.data();
     Vec3* f = forces.data();
     // A plain grid takes the structured pass (grid_force_pass.h): gravity, drag and springs
@@ -75,7 +75,7 @@ void accumulate_forces(const Cloth& cloth, const ForceField& field, std::span<co
         } else {
             for (std::size_t p = 0; p < count; ++p) f[p] = mass[p] * field.gravity;
         }
-        for (const SpringGroup& group : cloth.spring_groups)
+        for (const SpringGroup& group : cloth.topology().spring_groups)
             accumulate_spring_forces(group, positions, velocities, forces, pool);
     }
     if (!field.colliders.empty())

@@ -47,10 +47,10 @@ bool describe_stencil(const Cloth& cloth, std::span<const Vec3> positions, grid_
     job.rows = cloth.rows;
     job.cols = cloth.cols;
     job.positions = &positions.data()->x;
-    job.masses = cloth.masses.data();
-    for (const GridStencilDirection& direction : cloth.grid_stencil.directions) {
+    job.masses = cloth.topology().masses.data();
+    for (const GridStencilDirection& direction : cloth.topology().grid_stencil.directions) {
         if (job.direction_count == grid_kernel::max_directions) return false;
-        const SpringGroup& group = cloth.spring_groups[direction.group];
+        const SpringGroup& group = cloth.topology().spring_groups[direction.group];
         job.directions[job.direction_count++] = {direction.row_step, direction.col_step,
                                                  group.stiffness, group.damping,
                                                  direction.rest_lengths.data()};
@@ -153,7 +153,7 @@ bool step_grid_symplectic_euler(Cloth& cloth, const ForceField& field, double dt
     job.velocities = &cloth.velocities.data()->x;
     describe_field(field, job);
     job.dt = dt;
-    job.inverse_masses = cloth.inverse_masses.data();
+    job.inverse_masses = cloth.topology().inverse_masses.data();
     job.next_positions = &next_positions.data()->x;
     job.next_velocities = &next_velocities.data()->x;
     if (sweep) {

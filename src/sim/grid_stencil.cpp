@@ -25,7 +25,7 @@ FamilyDirections directions_of(SpringFamily family) {
 }  // namespace
 
 void build_grid_stencil(Cloth& cloth) {
-    GridStencil& stencil = cloth.grid_stencil;
+    GridStencil& stencil = cloth.edit_topology().grid_stencil;
     stencil = GridStencil{};
     const std::size_t count = cloth.particle_count();
     // A mesh's one "row" could pass for a grid whose springs happen to join neighbours.
@@ -35,8 +35,8 @@ void build_grid_stencil(Cloth& cloth) {
     if (!plain_grid) return;
     const auto cols = static_cast<std::uint32_t>(cloth.cols);
     GridStencil built;
-    for (std::size_t g = 0; g < cloth.spring_groups.size(); ++g) {
-        const SpringGroup& group = cloth.spring_groups[g];
+    for (std::size_t g = 0; g < cloth.topology().spring_groups.size(); ++g) {
+        const SpringGroup& group = cloth.topology().spring_groups[g];
         const FamilyDirections family = directions_of(group.family);
         const std::size_t first = built.directions.size();
         for (const auto& step : family.steps) {
@@ -71,11 +71,13 @@ void build_grid_stencil(Cloth& cloth) {
 }
 
 bool grid_stencil_usable(const Cloth& cloth) {
-    const GridStencil& stencil = cloth.grid_stencil;
-    if (stencil.directions.empty() || stencil.group_sizes.size() != cloth.spring_groups.size())
+    const GridStencil& stencil = cloth.topology().grid_stencil;
+    if (stencil.directions.empty() ||
+        stencil.group_sizes.size() != cloth.topology().spring_groups.size())
         return false;
-    for (std::size_t g = 0; g < cloth.spring_groups.size(); ++g)
-        if (stencil.group_sizes[g] != cloth.spring_groups[g].springs.size()) return false;
+    for (std::size_t g = 0; g < cloth.topology().spring_groups.size(); ++g)
+        if (stencil.group_sizes[g] != cloth.topology().spring_groups[g].springs.size())
+            return false;
     return true;
 }
 

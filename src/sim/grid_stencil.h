@@ -40,8 +40,8 @@ struct GridStencil {
     std::vector<std::size_t> group_sizes;
 };
 
-// Derives cloth.grid_stencil from cloth.spring_groups, or leaves it empty when some spring
-// is not one of its family's grid directions (or the layout is not a plain grid).
+// Derives cloth.topology().grid_stencil from cloth.topology().spring_groups, or leaves it empty
+// when some spring is not one of its family's grid directions (or the layout is not a plain grid).
 void build_grid_stencil(Cloth& cloth);
 
 // True when the stencil describes the cloth's springs as they are now.

@@ -327,8 +327,8 @@ Cloth build_mesh_cloth(const Scene& scene) {
         cloth.spacing = grid->spacing;
         add_grid_topology(scene, cloth);
         if (grid->turned_over)  // keep the file's front: (tl, bl, tr) becomes (tl, tr, bl)
-            for (Triangle& t : cloth.triangles) std::swap(t.b, t.c);
-        topology.areas = lumped_areas(mesh, cloth.triangles);
+            for (Triangle& t : cloth.edit_topology().triangles) std::swap(t.b, t.c);
+        topology.areas = lumped_areas(mesh, cloth.topology().triangles);
     } else {
         cloth.rows = 1;
         cloth.cols = static_cast<int>(count);
@@ -342,33 +342,35 @@ Cloth build_mesh_cloth(const Scene& scene) {
         double total_rest = 0.0;
         for (const Spring& spring : topology.structural) total_rest += spring.rest_length;
         cloth.spacing = total_rest / static_cast<double>(topology.structural.size());
-        cloth.spring_groups.push_back(make_group(SpringFamily::structural, scene.structural,
-                                                 std::move(topology.structural), count));
+        cloth.edit_topology().spring_groups.push_back(make_group(
+            SpringFamily::structural, scene.structural, std::move(topology.structural), count));
         if (scene.shear.enabled)
-            cloth.spring_groups.push_back(
+            cloth.edit_topology().spring_groups.push_back(
                 make_group(SpringFamily::shear, scene.shear, std::move(topology.shear), count));
         if (scene.bend.enabled)
-            cloth.spring_groups.push_back(
+            cloth.edit_topology().spring_groups.push_back(
                 make_group(SpringFamily::bend, scene.bend, std::move(topology.bend), count));
-        cloth.triangles = std::move(topology.triangles);
+        cloth.edit_topology().triangles = std::move(topology.triangles);
         // No grid stencil: the structured passes are for grids (grid_stencil.h).
     }
 
-    cloth.masses.resize(count);
-    cloth.inverse_masses.resize(count);
+    ClothTopology& weights = cloth.edit_topology();
+    weights.masses.resize(count);
+    weights.inverse_masses.resize(count);
     for (std::size_t p = 0; p < count; ++p) {
-        cloth.masses[p] =
+        weights.masses[p] =
             spec.mesh_particle_mass ? spec.particle_mass : spec.density * topology.areas[p];
-        cloth.inverse_masses[p] = 1.0 / cloth.masses[p];
+        weights.inverse_masses[p] = 1.0 / weights.masses[p];
     }
     if (spec.pin_preset == PinPreset::vertices)
         for (const std::int64_t number : spec.pin_vertices)
-            cloth.inverse_masses[static_cast<std::size_t>(number - 1)] = 0.0;
+            weights.inverse_masses[static_cast<std::size_t>(number - 1)] = 0.0;
     if (spec.pin_preset == PinPreset::group)
         for (const std::uint32_t p : mesh.find_group(spec.pin_group)->vertices)
-            cloth.inverse_masses[p] = 0.0;
+            weights.inverse_masses[p] = 0.0;
     for (std::size_t p = 0; p < count; ++p)
-        if (cloth.inverse_masses[p] == 0.0) cloth.pinned.push_back(static_cast<std::uint32_t>(p));
+        if (weights.inverse_masses[p] == 0.0)
+            weights.pinned.push_back(static_cast<std::uint32_t>(p));
     return cloth;
 }
 

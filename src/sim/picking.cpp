@@ -10,8 +10,8 @@ std::optional<RayHit> cast_ray(const Cloth& cloth, const Vec3& origin, const Vec
     std::optional<RayHit> nearest;
     double nearest_distance = std::numeric_limits<double>::infinity();
     const Vec3* x = cloth.positions.data();
-    for (std::size_t t = 0; t < cloth.triangles.size(); ++t) {
-        const Triangle& triangle = cloth.triangles[t];
+    for (std::size_t t = 0; t < cloth.topology().triangles.size(); ++t) {
+        const Triangle& triangle = cloth.topology().triangles[t];
         // Möller–Trumbore: solve origin + s·direction = a + u (b - a) + v (c - a).
         const Vec3 a = x[triangle.a], edge_ab = x[triangle.b] - a, edge_ac = x[triangle.c] - a;
         const Vec3 p = glm::cross(direction, edge_ac);

@@ -10,7 +10,7 @@
 namespace weft {
 
 struct RayHit {
-    std::uint32_t triangle;  // index into cloth.triangles
+    std::uint32_t triangle;  // index into cloth.topology().triangles
     std::uint32_t particle;  // the hit triangle's corner nearest the hit point
     double distance;         // m along the (unit) ray direction
     Vec3 point;              // m, where the ray meets the triangle

@@ -185,7 +185,7 @@ void SelfCollision::rebuild_joined_partners(const Cloth& cloth) {
     // took most of a list rebuild's time.
     const std::size_t count = cloth.particle_count();
     joined_start_.assign(count + 1, 0);
-    for (const SpringGroup& group : cloth.spring_groups)
+    for (const SpringGroup& group : cloth.topology().spring_groups)
         for (const Spring& spring : group.springs) {
             ++joined_start_[spring.i + 1];
             ++joined_start_[spring.j + 1];
@@ -193,7 +193,7 @@ void SelfCollision::rebuild_joined_partners(const Cloth& cloth) {
     for (std::size_t p = 1; p <= count; ++p) joined_start_[p] += joined_start_[p - 1];
     joined_partners_.resize(joined_start_[count]);
     joined_fill_.assign(joined_start_.begin(), joined_start_.end() - 1);
-    for (const SpringGroup& group : cloth.spring_groups)
+    for (const SpringGroup& group : cloth.topology().spring_groups)
         for (const Spring& spring : group.springs) {
             joined_partners_[joined_fill_[spring.i]++] = spring.j;
             joined_partners_[joined_fill_[spring.j]++] = spring.i;
@@ -374,7 +374,8 @@ std::size_t SelfCollision::resolve(Cloth& cloth, std::span<const Collider> colli
 double SelfCollision::separate_pairs(Cloth& cloth, SweepWatch* watch) const {
     double deepest = 0.0;
     for (const auto& [a, b] : pairs_) {
-        const double wa = cloth.inverse_masses[a], wb = cloth.inverse_masses[b];
+        const double wa = cloth.topology().inverse_masses[a],
+                     wb = cloth.topology().inverse_masses[b];
         if (wa + wb == 0.0) continue;
         Vec3 d = cloth.positions[b] - cloth.positions[a];
         double distance = glm::length(d);
@@ -390,7 +391,7 @@ double SelfCollision::separate_pairs(Cloth& cloth, SweepWatch* watch) const {
 
 void SelfCollision::push_apart(Cloth& cloth, std::uint32_t a, std::uint32_t b, const Vec3& n,
                                double overlap, SweepWatch* watch) {
-    const double wa = cloth.inverse_masses[a], wb = cloth.inverse_masses[b];
+    const double wa = cloth.topology().inverse_masses[a], wb = cloth.topology().inverse_masses[b];
     const double share_a = wa / (wa + wb), share_b = wb / (wa + wb);
     cloth.positions[a] -= share_a * overlap * n;
     cloth.positions[b] += share_b * overlap * n;

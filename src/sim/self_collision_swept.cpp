@@ -136,7 +136,8 @@ double SelfCollision::separate_swept_pairs(Cloth& cloth, std::span<const Vec3> s
                                            std::size_t& close_pairs, SweepWatch* watch) const {
     double deepest = 0.0;
     for (const auto& [a, b] : swept_candidates_) {
-        if (cloth.inverse_masses[a] + cloth.inverse_masses[b] == 0.0) continue;
+        if (cloth.topology().inverse_masses[a] + cloth.topology().inverse_masses[b] == 0.0)
+            continue;
         const Vec3 start = step_start[b] - step_start[a];
         const Vec3 end = cloth.positions[b] - cloth.positions[a];
         // Closest approach of the straight paths: start + t (end - start), t in [0, 1].

@@ -36,9 +36,9 @@ struct OnSteppedRows {
         auto& work = *static_cast<OnSteppedRows*>(context);
         if (!work.colliders.empty())
             work.contacts.fetch_add(
-                resolve_impulse_contacts(work.colliders, work.positions.data(),
-                                         work.velocities.data(), work.cloth.inverse_masses.data(),
-                                         begin, end, work.watch),
+                resolve_impulse_contacts(
+                    work.colliders, work.positions.data(), work.velocities.data(),
+                    work.cloth.topology().inverse_masses.data(), begin, end, work.watch),
                 std::memory_order_relaxed);
         if (work.self_collision)
             work.self_collision->measure_step_moves(
@@ -73,7 +73,7 @@ void Simulation::reset() {
     cloth_ = build_cloth(scene_);
     switched_off_.clear();
     set_force_field(scene_.forces.gravity, scene_.forces.air_drag, scene_.forces.wind);
-    workspace_.resize(cloth_.particle_count());
+    workspace_.resize(cloth_.particle_count(), integrator_);
     workspace_.pool = pool_.get();
     drag_ = DragHandle{};
     build_colliders();
@@ -194,7 +194,7 @@ void Simulation::set_integrator(Integrator integrator) {
     integrator_ = integrator;
     scene_.solver.integrator = integrator;  // scene() follows, so reset and saving keep it
     step_function_ = function;
-    workspace_.history_valid = false;
+    workspace_.resize(cloth_.particle_count(), integrator);  // the new method's scratch only
 }
 
 void Simulation::set_dt(double dt) {
@@ -219,7 +219,7 @@ void Simulation::set_spring_material(SpringFamily family, double stiffness, doub
     SpringFamilySpec& spec = family_spec(scene_, family);
     spec.stiffness = stiffness;
     spec.damping = damping;
-    for (auto* groups : {&cloth_.spring_groups, &switched_off_}) {
+    for (auto* groups : {&cloth_.edit_topology().spring_groups, &switched_off_}) {
         for (SpringGroup& group : *groups) {
             if (group.family != family) continue;
             group.stiffness = stiffness;
@@ -267,9 +267,10 @@ void Simulation::set_force_field(const Vec3d& gravity, double air_drag, const Ve
 void Simulation::set_particle_mass(double mass) {
     energy_guard_.forget();  // the energy is measured against other terms now
     scene_.cloth.particle_mass = mass;
+    ClothTopology& topology = cloth_.edit_topology();
     for (std::size_t p = 0; p < cloth_.particle_count(); ++p) {
-        cloth_.masses[p] = mass;
-        if (!cloth_.is_pinned(p)) cloth_.inverse_masses[p] = 1.0 / mass;
+        topology.masses[p] = mass;
+        if (topology.inverse_masses[p] != 0.0) topology.inverse_masses[p] = 1.0 / mass;
     }
     workspace_.history_valid = false;
 }
@@ -365,7 +366,8 @@ void Simulation::set_pinned(std::size_t particle, bool pinned) {
 
 void Simulation::release_all_pins() {
     energy_guard_.forget();  // the energy is measured against other terms now
-    while (!cloth_.pinned.empty()) weft::set_pinned(cloth_, cloth_.pinned.back(), false);
+    while (!cloth_.topology().pinned.empty())
+        weft::set_pinned(cloth_, cloth_.topology().pinned.back(), false);
     workspace_.history_valid = false;
 }
 

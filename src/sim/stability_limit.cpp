@@ -14,7 +14,7 @@ namespace {
 // the opposite to y_j.
 void apply_stiffness(const Cloth& cloth, const std::vector<Vec3>& x, std::vector<Vec3>& y) {
     std::fill(y.begin(), y.end(), Vec3(0.0));
-    for (const SpringGroup& group : cloth.spring_groups) {
+    for (const SpringGroup& group : cloth.topology().spring_groups) {
         for (const Spring& spring : group.springs) {
             const Vec3 d = cloth.positions[spring.j] - cloth.positions[spring.i];
             const double length = glm::length(d);
@@ -39,7 +39,8 @@ double highest_angular_frequency(const Cloth& cloth, int max_iterations,
     // particles are held at zero (their rows and columns are removed).
     std::vector<double> inverse_sqrt_mass(count);
     for (std::size_t p = 0; p < count; ++p)
-        inverse_sqrt_mass[p] = cloth.is_pinned(p) ? 0.0 : 1.0 / std::sqrt(cloth.masses[p]);
+        inverse_sqrt_mass[p] =
+            cloth.is_pinned(p) ? 0.0 : 1.0 / std::sqrt(cloth.topology().masses[p]);
     std::vector<Vec3> z(count), x(count), y(count);
     // A fixed, deterministic start with a component along every mode of a grid.
     for (std::size_t p = 0; p < count; ++p) {
@@ -76,7 +77,7 @@ double highest_angular_frequency(const Cloth& cloth, int max_iterations,
 
 double angular_frequency_bound(const Cloth& cloth) {
     std::vector<double> stiffness_sum(cloth.particle_count(), 0.0);
-    for (const SpringGroup& group : cloth.spring_groups) {
+    for (const SpringGroup& group : cloth.topology().spring_groups) {
         for (const Spring& spring : group.springs) {
             stiffness_sum[spring.i] += group.stiffness;
             stiffness_sum[spring.j] += group.stiffness;
@@ -84,13 +85,14 @@ double angular_frequency_bound(const Cloth& cloth) {
     }
     double bound = 0.0;
     for (std::size_t p = 0; p < cloth.particle_count(); ++p)
-        if (!cloth.is_pinned(p)) bound = std::max(bound, 2.0 * stiffness_sum[p] / cloth.masses[p]);
+        if (!cloth.is_pinned(p))
+            bound = std::max(bound, 2.0 * stiffness_sum[p] / cloth.topology().masses[p]);
     return std::sqrt(bound);
 }
 
 double damping_rate_bound(const Cloth& cloth, double air_drag) {
     std::vector<double> damping_sum(cloth.particle_count(), 0.0);
-    for (const SpringGroup& group : cloth.spring_groups) {
+    for (const SpringGroup& group : cloth.topology().spring_groups) {
         for (const Spring& spring : group.springs) {
             damping_sum[spring.i] += group.damping;
             damping_sum[spring.j] += group.damping;
@@ -99,7 +101,7 @@ double damping_rate_bound(const Cloth& cloth, double air_drag) {
     double bound = 0.0;
     for (std::size_t p = 0; p < cloth.particle_count(); ++p)
         if (!cloth.is_pinned(p))
-            bound = std::max(bound, (2.0 * damping_sum[p] + air_drag) / cloth.masses[p]);
+            bound = std::max(bound, (2.0 * damping_sum[p] + air_drag) / cloth.topology().masses[p]);
     return bound;
 }
 

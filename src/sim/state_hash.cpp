@@ -22,7 +22,7 @@ std::uint64_t hash_state(const Cloth& cloth) {
     Fnv1a hash;
     hash.add(cloth.positions.data(), cloth.positions.size() * sizeof(Vec3));
     hash.add(cloth.velocities.data(), cloth.velocities.size() * sizeof(Vec3));
-    for (const SpringGroup& group : cloth.spring_groups)
+    for (const SpringGroup& group : cloth.topology().spring_groups)
         for (const Spring& spring : group.springs) {
             hash.add(&spring.i, sizeof spring.i);
             hash.add(&spring.j, sizeof spring.j);

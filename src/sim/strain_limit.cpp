@@ -9,11 +9,11 @@ std::size_t limit_strain(Cloth& cloth, double max_stretch, double dt, int max_pa
     std::size_t corrections = 0;
     Vec3* x = cloth.positions.data();
     Vec3* v = cloth.velocities.data();
-    const double* inverse_mass = cloth.inverse_masses.data();
+    const double* inverse_mass = cloth.topology().inverse_masses.data();
     const double inverse_dt = 1.0 / dt;
     for (int pass = 0; pass < max_passes; ++pass) {
         std::size_t corrected_this_pass = 0;
-        for (const SpringGroup& group : cloth.spring_groups) {
+        for (const SpringGroup& group : cloth.topology().spring_groups) {
             for (const Spring& spring : group.springs) {
                 const Vec3 d = x[spring.j] - x[spring.i];
                 const double length = std::sqrt(glm::dot(d, d));

@@ -9,19 +9,20 @@ namespace weft {
 void after_springs_removed(Cloth& cloth, std::vector<std::uint64_t>& removed_edges) {
     // Removal kept the order, but the colour boundaries moved; colouring again is cheap next
     // to the event that removed the springs.
-    for (SpringGroup& group : cloth.spring_groups) colour_springs(group, cloth.particle_count());
+    ClothTopology& topology = cloth.edit_topology();
+    for (SpringGroup& group : topology.spring_groups) colour_springs(group, cloth.particle_count());
     build_grid_stencil(cloth);  // the removed springs become masked, dead stencil entries
     std::sort(removed_edges.begin(), removed_edges.end());
     auto removed = [&](std::uint32_t a, std::uint32_t b) {
         return std::binary_search(removed_edges.begin(), removed_edges.end(), edge_key(a, b));
     };
-    std::erase_if(cloth.triangles, [&](const Triangle& t) {
+    std::erase_if(cloth.edit_topology().triangles, [&](const Triangle& t) {
         return removed(t.a, t.b) || removed(t.b, t.c) || removed(t.c, t.a);
     });
 }
 
 std::optional<SpringGroup> take_spring_family(Cloth& cloth, SpringFamily family) {
-    auto& groups = cloth.spring_groups;
+    auto& groups = cloth.edit_topology().spring_groups;
     auto at = std::find_if(groups.begin(), groups.end(),
                            [&](const SpringGroup& g) { return g.family == family; });
     if (at == groups.end()) return std::nullopt;
@@ -52,7 +53,7 @@ void add_spring_family(Cloth& cloth, SpringGroup fresh) {
                       [&](const Spring& s) { return !joined_through_one(s.i, s.j); });
     }
     colour_springs(fresh, cloth.particle_count());
-    auto& groups = cloth.spring_groups;
+    auto& groups = cloth.edit_topology().spring_groups;
     auto at = std::find_if(groups.begin(), groups.end(),
                            [&](const SpringGroup& g) { return g.family > fresh.family; });
     groups.insert(at, std::move(fresh));
@@ -60,13 +61,15 @@ void add_spring_family(Cloth& cloth, SpringGroup fresh) {
 }
 
 void set_pinned(Cloth& cloth, std::size_t particle, bool pinned) {
-    cloth.inverse_masses[particle] = pinned ? 0.0 : 1.0 / cloth.masses[particle];
     if (pinned) cloth.velocities[particle] = Vec3(0.0);
+    if (cloth.is_pinned(particle) == pinned) return;  // nothing to change: no new version
+    ClothTopology& topology = cloth.edit_topology();
+    topology.inverse_masses[particle] = pinned ? 0.0 : 1.0 / topology.masses[particle];
     const auto index = static_cast<std::uint32_t>(particle);
-    auto at = std::lower_bound(cloth.pinned.begin(), cloth.pinned.end(), index);
-    const bool listed = at != cloth.pinned.end() && *at == index;
-    if (pinned && !listed) cloth.pinned.insert(at, index);
-    if (!pinned && listed) cloth.pinned.erase(at);
+    auto at = std::lower_bound(topology.pinned.begin(), topology.pinned.end(), index);
+    const bool listed = at != topology.pinned.end() && *at == index;
+    if (pinned && !listed) topology.pinned.insert(at, index);
+    if (!pinned && listed) topology.pinned.erase(at);
 }
 
 }  // namespace weft

@@ -28,17 +28,37 @@ void after_springs_removed(Cloth& cloth, std::vector<std::uint64_t>& removed_edg
 // A template so the per-spring test inlines: tearing runs this over every spring each step.
 template <class Predicate>
 std::size_t remove_springs_if(Cloth& cloth, Predicate should_remove) {
-    // Removals are rare (a few springs in a step that tears), so their edges go into a small
-    // vector; the common case of no removal allocates nothing.
+    // Judged on the topology as it is, shared or not: most steps remove nothing, and only a
+    // step that does makes the cloth its own copy (Cloth::edit_topology). Removals are rare (a
+    // few springs in a step that tears), so they go into small vectors; the common case of no
+    // removal allocates nothing.
     std::vector<std::uint64_t> removed_edges;
-    for (SpringGroup& group : cloth.spring_groups) {
-        std::erase_if(group.springs, [&](const Spring& spring) {
-            if (!should_remove(spring)) return false;
-            removed_edges.push_back(edge_key(spring.i, spring.j));
-            return true;
-        });
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> removed;  // (group, spring), in order
+    const std::vector<SpringGroup>& groups = cloth.topology().spring_groups;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        const std::vector<Spring>& springs = groups[g].springs;
+        for (std::size_t s = 0; s < springs.size(); ++s) {
+            if (!should_remove(springs[s])) continue;
+            removed_edges.push_back(edge_key(springs[s].i, springs[s].j));
+            removed.emplace_back(static_cast<std::uint32_t>(g), static_cast<std::uint32_t>(s));
+        }
     }
-    if (!removed_edges.empty()) after_springs_removed(cloth, removed_edges);
+    if (removed.empty()) return 0;
+    std::vector<SpringGroup>& own = cloth.edit_topology().spring_groups;
+    std::size_t next = 0;  // the first of `removed` not yet erased
+    for (std::size_t g = 0; g < own.size(); ++g) {
+        std::vector<Spring>& springs = own[g].springs;
+        std::size_t kept = 0;
+        for (std::size_t s = 0; s < springs.size(); ++s) {
+            if (next < removed.size() && removed[next].first == g && removed[next].second == s) {
+                ++next;
+                continue;
+            }
+            springs[kept++] = springs[s];
+        }
+        springs.resize(kept);
+    }
+    after_springs_removed(cloth, removed_edges);
     return removed_edges.size();
 }
 

@@ -70,13 +70,13 @@ void ClothView::set_mesh_uvs(const Cloth& cloth) {
 }
 
 void ClothView::rebuild_topology(const Cloth& cloth) {
-    spring_count_ = cloth.spring_count();
-    triangle_count_ = cloth.triangles.size();
+    topology_version_ = cloth.topology().version;
     spring_lines_.clear();
-    for (const SpringGroup& group : cloth.spring_groups)
+    for (const SpringGroup& group : cloth.topology().spring_groups)
         for (const Spring& spring : group.springs) spring_lines_.push_back({spring.i, spring.j});
     intact_triangles_.clear();
-    for (const Triangle& t : cloth.triangles) intact_triangles_.push_back({t.a, t.b, t.c});
+    for (const Triangle& t : cloth.topology().triangles)
+        intact_triangles_.push_back({t.a, t.b, t.c});
     wireframe_edges_ = raster::unique_edges(intact_triangles_);
     raster::find_vertex_triangles(intact_triangles_, positions_.size(), triangles_around_);
     face_normals_.resize(intact_triangles_.size());
@@ -84,8 +84,8 @@ void ClothView::rebuild_topology(const Cloth& cloth) {
 }
 
 void ClothView::update(const Cloth& cloth, WorkerPool* pool) {
-    if (cloth.spring_count() != spring_count_ || cloth.triangles.size() != triangle_count_)
-        rebuild_topology(cloth);
+    // A tear, a cut, a pin or a new material gives the topology a new version.
+    if (cloth.topology().version != topology_version_) rebuild_topology(cloth);
     // Positions, then every face normal, then each vertex's sum of its faces: each pass
     // reads what the one before wrote, and within a pass every element is independent.
     auto copy_positions = [&](std::size_t begin, std::size_t end) {
@@ -112,7 +112,8 @@ void ClothView::update(const Cloth& cloth, WorkerPool* pool) {
 
 std::span<const raster::Rgba8> ClothView::particle_colours(const Cloth& cloth) {
     particle_colours_.assign(cloth.particle_count(), raster::Rgba8{230, 230, 230, 255});
-    for (std::uint32_t p : cloth.pinned) particle_colours_[p] = raster::Rgba8{255, 210, 40, 255};
+    for (std::uint32_t p : cloth.topology().pinned)
+        particle_colours_[p] = raster::Rgba8{255, 210, 40, 255};
     return particle_colours_;
 }
 
@@ -123,7 +124,7 @@ raster::MeshView ClothView::mesh() const {
 std::span<const raster::Rgba8> ClothView::spring_colours(const Cloth& cloth) {
     spring_line_colours_.resize(spring_lines_.size());
     std::size_t line = 0;
-    for (const SpringGroup& group : cloth.spring_groups) {
+    for (const SpringGroup& group : cloth.topology().spring_groups) {
         for (const Spring& spring : group.springs) {
             const double length =
                 glm::length(cloth.positions[spring.j] - cloth.positions[spring.i]);

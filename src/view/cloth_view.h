@@ -65,8 +65,7 @@ class ClothView {
     std::vector<raster::LineIndices> spring_lines_;
     std::vector<raster::Rgba8> spring_line_colours_;
     std::vector<raster::LineIndices> lone_springs_;
-    std::size_t spring_count_ = 0;
-    std::size_t triangle_count_ = 0;
+    std::uint64_t topology_version_ = 0;  // of the topology the lines and triangles are from
     raster::PreparedMesh prepared_mesh_;
     raster::TriangleBands triangle_bands_;
     std::vector<raster::PreparedMesh> collider_meshes_;

@@ -48,7 +48,7 @@ float ground_height_below(const Cloth& cloth, std::span<const Collider> collider
     double lowest = 0.0;
     for (const Vec3& x : cloth.positions) lowest = std::min(lowest, x.y);
     const double cloth_length = cloth.rest_span();  // m
-    for (std::uint32_t p : cloth.pinned)
+    for (std::uint32_t p : cloth.topology().pinned)
         lowest = std::min(lowest, cloth.positions[p].y - cloth_length);
     return static_cast<float>(lowest) - 0.1f;  // m
 }

@@ -70,7 +70,7 @@ std::vector<raster::LineIndices> find_lone_springs(
     std::span<const raster::TriangleIndices> triangles, const raster::VertexTriangles& around) {
     std::vector<raster::LineIndices> lone;
     const bool mesh = cloth.is_mesh();
-    for (const SpringGroup& group : cloth.spring_groups)
+    for (const SpringGroup& group : cloth.topology().spring_groups)
         for (const Spring& s : group.springs)
             if (mesh) {
                 if (!held_by_triangles(s, triangles, around)) lone.push_back({s.i, s.j});

@@ -24,7 +24,7 @@ inline ClothPieces cloth_pieces(const Cloth& cloth) {
         return p;
     };
     std::vector<bool> in_triangle(cloth.particle_count(), false);
-    for (const Triangle& t : cloth.triangles) {
+    for (const Triangle& t : cloth.topology().triangles) {
         parent[root(t.a)] = root(t.b);
         parent[root(t.b)] = root(t.c);
         in_triangle[t.a] = in_triangle[t.b] = in_triangle[t.c] = true;
@@ -35,7 +35,7 @@ inline ClothPieces cloth_pieces(const Cloth& cloth) {
         pieces.piece_of[p] = root(p);
         if (in_triangle[p] && root(p) == p) ++pieces.pieces_with_triangles;
     }
-    for (const SpringGroup& group : cloth.spring_groups)
+    for (const SpringGroup& group : cloth.topology().spring_groups)
         for (const Spring& s : group.springs)
             if (pieces.piece_of[s.i] != pieces.piece_of[s.j]) ++pieces.joining_springs;
     return pieces;

@@ -318,7 +318,7 @@ TEST(DemoState, CuttingEverySpringLeavesACloudThatFalls) {
     EXPECT_GT(cut, 10 * left) << cut << " cut, " << left << " left";
     state.simulation.cut_springs([](const Spring&) { return true; });
     EXPECT_EQ(state.simulation.cloth().spring_count(), 0u);
-    EXPECT_TRUE(state.simulation.cloth().triangles.empty());
+    EXPECT_TRUE(state.simulation.cloth().topology().triangles.empty());
     EXPECT_FALSE(state.grab(view_centre, view));  // nothing left to hold
     const double mean_height_before = [&] {
         double sum = 0.0;

@@ -176,7 +176,7 @@ TEST(HandTools, AStrokePastBothEdgesCutsEverySpringItCrosses) {
             points.push_back(points.back() + glm::vec2(step(random), wobble(random)));
         const ScreenPoints on_screen = particles_on_screen(sim.cloth(), camera, 800, 600);
         std::set<std::uint64_t> expected;
-        for (const SpringGroup& group : sim.cloth().spring_groups)
+        for (const SpringGroup& group : sim.cloth().topology().spring_groups)
             for (const Spring& s : group.springs)
                 for (std::size_t k = 0; k + 1 < points.size(); ++k)
                     if (solved_crossing(points[k], points[k + 1], *on_screen[s.i], *on_screen[s.j]))
@@ -198,7 +198,7 @@ TEST(HandTools, AStrokePastBothEdgesCutsEverySpringItCrosses) {
         };
         std::size_t joining = 0, below = 0;
         for (std::size_t p = 0; p < on_screen.size(); ++p) below += !above(*on_screen[p]);
-        for (const SpringGroup& group : sim.cloth().spring_groups)
+        for (const SpringGroup& group : sim.cloth().topology().spring_groups)
             for (const Spring& s : group.springs)
                 joining += above(*on_screen[s.i]) != above(*on_screen[s.j]);
         EXPECT_GT(below, 0u) << "stroke " << stroke;

@@ -40,7 +40,7 @@ TEST(PlainFloatCloth, FollowsWeftsSymplecticEulerToFloatPrecision) {
     // (a missing dashpot, drag or wind term) moves the sheet by millimetres in 50 ms.
     EXPECT_LT(largest_difference, 1e-5);
     EXPECT_GT(largest_motion, 1e-3);  // the sheet moved: the comparison is not vacuous
-    for (std::uint32_t pinned : weft_run.cloth().pinned)  // where float put it, exactly
+    for (std::uint32_t pinned : weft_run.cloth().topology().pinned)  // where float put it, exactly
         for (int k = 0; k < 3; ++k)
             EXPECT_EQ(single[pinned][k], double(static_cast<float>(start[pinned][k])));
 }

@@ -149,14 +149,14 @@ TEST(XpbdCloth, FreeSheetKeepsItsLinearMomentum) {
     for (std::size_t p = 0; p < cloth.particle_count(); ++p) {
         cloth.positions[p] += Vec3(offset(rng), offset(rng), offset(rng));
         cloth.velocities[p] = Vec3(speed(rng), speed(rng), speed(rng));
-        cloth.masses[p] *= scale(rng);
-        cloth.inverse_masses[p] = 1.0 / cloth.masses[p];
+        cloth.edit_topology().masses[p] *= scale(rng);
+        cloth.edit_topology().inverse_masses[p] = 1.0 / cloth.edit_topology().masses[p];
     }
     XpbdCloth xpbd(cloth, simulation.force_field());
     const Vec3 before = xpbd.momentum();
     double momentum_scale = 0.0;  // Σ m |v|, kg·m/s
     for (std::size_t p = 0; p < cloth.particle_count(); ++p)
-        momentum_scale += cloth.masses[p] * glm::length(cloth.velocities[p]);
+        momentum_scale += cloth.topology().masses[p] * glm::length(cloth.velocities[p]);
     for (int f = 0; f < 60; ++f) xpbd.step_frame(frame, 10);
     // Float rounding of positions (about 1e-8 m here) over h = 1/600 s, in a random walk
     // over 600 substeps and 36 particles: far below 1e-4 of Σ m |v|.

@@ -30,7 +30,7 @@ double closest_approach(const Vec3& start, const Vec3& end) {
 // algorithm of its own, not the pass's hash).
 double closest_unjoined_approach(const Cloth& cloth, const std::vector<Vec3>& start, double reach) {
     std::vector<std::uint64_t> joined;
-    for (const SpringGroup& group : cloth.spring_groups)
+    for (const SpringGroup& group : cloth.topology().spring_groups)
         for (const Spring& spring : group.springs)
             joined.push_back((std::uint64_t{std::min(spring.i, spring.j)} << 32) |
                              std::max(spring.i, spring.j));

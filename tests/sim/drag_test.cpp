@@ -63,7 +63,8 @@ TEST(Drag, ForceIsCappedWhateverTheDistance) {
     drag.target += Vec3(1e6, 0.0, 0.0);  // a flick to the other side of the world
     std::vector<Vec3> forces(cloth.particle_count(), Vec3(0.0));
     accumulate_drag_forces(drag, cloth, cloth.positions, cloth.velocities, forces);
-    EXPECT_NEAR(glm::length(forces[grabbed]), cloth.masses[grabbed] * drag.max_acceleration, 1e-12);
+    EXPECT_NEAR(glm::length(forces[grabbed]),
+                cloth.topology().masses[grabbed] * drag.max_acceleration, 1e-12);
 }
 
 TEST(Drag, AFastFlickDoesNotBlowUpTheCloth) {

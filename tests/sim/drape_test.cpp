@@ -56,7 +56,7 @@ Scene drape_scene() {
 std::vector<bool> joined_pairs(const Cloth& cloth) {
     const std::size_t n = cloth.particle_count();
     std::vector<bool> joined(n * n, false);
-    for (const SpringGroup& group : cloth.spring_groups)
+    for (const SpringGroup& group : cloth.topology().spring_groups)
         for (const Spring& s : group.springs) joined[s.i * n + s.j] = joined[s.j * n + s.i] = true;
     return joined;
 }

@@ -159,10 +159,12 @@ TEST(SheetMeasures, AreTheSameBitsOnAnyThreadCount) {
     double plain_largest = 0.0;
     for (std::size_t p = 0; p < cloth.particle_count(); ++p) {
         if (cloth.is_pinned(p)) continue;
-        plain.kinetic += 0.5 * cloth.masses[p] * glm::dot(cloth.velocities[p], cloth.velocities[p]);
-        plain.gravitational -= cloth.masses[p] * glm::dot(field.gravity, cloth.positions[p]);
+        plain.kinetic +=
+            0.5 * cloth.topology().masses[p] * glm::dot(cloth.velocities[p], cloth.velocities[p]);
+        plain.gravitational -=
+            cloth.topology().masses[p] * glm::dot(field.gravity, cloth.positions[p]);
     }
-    for (const SpringGroup& group : cloth.spring_groups)
+    for (const SpringGroup& group : cloth.topology().spring_groups)
         for (const Spring& spring : group.springs) {
             const double length =
                 glm::length(cloth.positions[spring.j] - cloth.positions[spring.i]);

@@ -54,9 +54,9 @@ TEST(ForcePass, MatchesTheDesignFormulaSpringBySpring) {
     // Independent evaluation: f = (k (|d| - L) + c ((v_j - v_i)·u)) u on i, -f on j.
     std::vector<Vec3> expected(cloth.particle_count());
     for (std::size_t p = 0; p < cloth.particle_count(); ++p)
-        expected[p] =
-            cloth.masses[p] * field.gravity - field.air_drag * (cloth.velocities[p] - field.wind);
-    for (const SpringGroup& group : cloth.spring_groups) {
+        expected[p] = cloth.topology().masses[p] * field.gravity -
+                      field.air_drag * (cloth.velocities[p] - field.wind);
+    for (const SpringGroup& group : cloth.topology().spring_groups) {
         for (const Spring& s : group.springs) {
             const Vec3 d = cloth.positions[s.j] - cloth.positions[s.i];
             const Vec3 u = glm::normalize(d);

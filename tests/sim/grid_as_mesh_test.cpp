@@ -166,13 +166,14 @@ TEST_P(GridAsMeshSteps, BuildsTheGridBuildersCloth) {
     EXPECT_EQ(mesh.spacing, spacing);
     EXPECT_FALSE(mesh.is_mesh());
     EXPECT_TRUE(testing::same_bits(mesh.positions, grid.positions));
-    EXPECT_EQ(mesh.masses, grid.masses);
-    EXPECT_EQ(mesh.inverse_masses, grid.inverse_masses);
-    EXPECT_EQ(mesh.pinned, grid.pinned);
-    ASSERT_EQ(mesh.spring_groups.size(), 3u);
-    ASSERT_EQ(mesh.spring_groups.size(), grid.spring_groups.size());
-    for (std::size_t g = 0; g < grid.spring_groups.size(); ++g) {
-        const SpringGroup &m = mesh.spring_groups[g], &w = grid.spring_groups[g];
+    EXPECT_EQ(mesh.topology().masses, grid.topology().masses);
+    EXPECT_EQ(mesh.topology().inverse_masses, grid.topology().inverse_masses);
+    EXPECT_EQ(mesh.topology().pinned, grid.topology().pinned);
+    ASSERT_EQ(mesh.topology().spring_groups.size(), 3u);
+    ASSERT_EQ(mesh.topology().spring_groups.size(), grid.topology().spring_groups.size());
+    for (std::size_t g = 0; g < grid.topology().spring_groups.size(); ++g) {
+        const SpringGroup &m = mesh.topology().spring_groups[g],
+                          &w = grid.topology().spring_groups[g];
         EXPECT_EQ(m.family, w.family);
         EXPECT_EQ(m.stiffness, w.stiffness);
         EXPECT_EQ(m.damping, w.damping);
@@ -185,17 +186,18 @@ TEST_P(GridAsMeshSteps, BuildsTheGridBuildersCloth) {
                 << spring_family_name(w.family) << s;
         }
     }
-    ASSERT_EQ(mesh.triangles.size(), grid.triangles.size());
-    for (std::size_t t = 0; t < grid.triangles.size(); ++t) {
-        EXPECT_EQ(mesh.triangles[t].a, grid.triangles[t].a);
-        EXPECT_EQ(mesh.triangles[t].b, grid.triangles[t].b);
-        EXPECT_EQ(mesh.triangles[t].c, grid.triangles[t].c);
+    ASSERT_EQ(mesh.topology().triangles.size(), grid.topology().triangles.size());
+    for (std::size_t t = 0; t < grid.topology().triangles.size(); ++t) {
+        EXPECT_EQ(mesh.topology().triangles[t].a, grid.topology().triangles[t].a);
+        EXPECT_EQ(mesh.topology().triangles[t].b, grid.topology().triangles[t].b);
+        EXPECT_EQ(mesh.topology().triangles[t].c, grid.topology().triangles[t].c);
     }
     ASSERT_TRUE(grid_stencil_usable(mesh));
-    ASSERT_EQ(mesh.grid_stencil.directions.size(), grid.grid_stencil.directions.size());
-    for (std::size_t d = 0; d < grid.grid_stencil.directions.size(); ++d)
-        EXPECT_EQ(mesh.grid_stencil.directions[d].rest_lengths,
-                  grid.grid_stencil.directions[d].rest_lengths);
+    ASSERT_EQ(mesh.topology().grid_stencil.directions.size(),
+              grid.topology().grid_stencil.directions.size());
+    for (std::size_t d = 0; d < grid.topology().grid_stencil.directions.size(); ++d)
+        EXPECT_EQ(mesh.topology().grid_stencil.directions[d].rest_lengths,
+                  grid.topology().grid_stencil.directions[d].rest_lengths);
 }
 
 // Stepped: every step's positions and velocities the same bits, and the same state hash;
@@ -242,11 +244,11 @@ TEST_F(GridAsMesh, WoundTheOtherWayKeepsTheFilesFront) {
         Integrator::symplectic_euler,
         obj_text(grid_vertices(Orientation::vertical), in_order(), /*turned_over=*/true)));
     ASSERT_TRUE(grid_stencil_usable(mesh));
-    ASSERT_EQ(mesh.triangles.size(), grid.triangles.size());
-    for (std::size_t t = 0; t < grid.triangles.size(); ++t) {
-        EXPECT_EQ(mesh.triangles[t].a, grid.triangles[t].a);
-        EXPECT_EQ(mesh.triangles[t].b, grid.triangles[t].c);
-        EXPECT_EQ(mesh.triangles[t].c, grid.triangles[t].b);
+    ASSERT_EQ(mesh.topology().triangles.size(), grid.topology().triangles.size());
+    for (std::size_t t = 0; t < grid.topology().triangles.size(); ++t) {
+        EXPECT_EQ(mesh.topology().triangles[t].a, grid.topology().triangles[t].a);
+        EXPECT_EQ(mesh.topology().triangles[t].b, grid.topology().triangles[t].c);
+        EXPECT_EQ(mesh.topology().triangles[t].c, grid.topology().triangles[t].b);
     }
     EXPECT_EQ(mesh.spring_count(), grid.spring_count());
 }
@@ -259,9 +261,9 @@ TEST_F(GridAsMesh, WithADensityTheMassesAreLumped) {
                    obj_text(grid_vertices(Orientation::vertical), in_order()), "density = 0.4\n"));
     ASSERT_TRUE(grid_stencil_usable(mesh));
     double total = 0.0;  // kg
-    for (double m : mesh.masses) total += m;
+    for (double m : mesh.topology().masses) total += m;
     EXPECT_NEAR(total, 0.4 * (rows - 1) * (cols - 1) * spacing * spacing, 1e-15);
-    EXPECT_NEAR(mesh.masses[2 * cols + 3], 0.4 * spacing * spacing, 1e-15);
+    EXPECT_NEAR(mesh.topology().masses[2 * cols + 3], 0.4 * spacing * spacing, 1e-15);
 }
 
 // Not exactly the grid: a plain mesh (one row, no stencil, its mesh extent) that hangs as
@@ -272,7 +274,7 @@ void expect_plain_mesh_hanging_like_the_grid(Simulation& mesh, Simulation& grid,
     ASSERT_EQ(mesh.cloth().rows, 1);
     ASSERT_EQ(mesh.cloth().cols, rows * cols);
     EXPECT_TRUE(mesh.cloth().is_mesh());
-    EXPECT_TRUE(mesh.cloth().grid_stencil.directions.empty());
+    EXPECT_TRUE(mesh.cloth().topology().grid_stencil.directions.empty());
     EXPECT_EQ(mesh.cloth().spring_count(), grid.cloth().spring_count());
     for (int step = 0; step < 200; ++step) {
         ASSERT_FALSE(grid.step().diverged()) << "step " << step;

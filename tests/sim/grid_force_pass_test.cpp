@@ -43,7 +43,7 @@ std::vector<Vec3> forces_of(const Cloth& cloth, const ForceField& field,
 
 // The general pass's forces: the same cloth without its stencil.
 std::vector<Vec3> general_forces_of(Cloth cloth, const ForceField& field) {
-    cloth.grid_stencil = GridStencil{};
+    cloth.edit_topology().grid_stencil = GridStencil{};
     return forces_of(cloth, field);
 }
 
@@ -52,7 +52,7 @@ std::vector<Vec3> general_forces_of(Cloth cloth, const ForceField& field) {
 void expect_same_to_rounding(const Cloth& cloth, const std::vector<Vec3>& grid,
                              const std::vector<Vec3>& general) {
     std::vector<double> largest_term(cloth.particle_count(), 0.0);
-    for (const SpringGroup& group : cloth.spring_groups) {
+    for (const SpringGroup& group : cloth.topology().spring_groups) {
         for (const Spring& s : group.springs) {
             const Vec3 d = cloth.positions[s.j] - cloth.positions[s.i];
             const double term =
@@ -71,7 +71,7 @@ void expect_same_to_rounding(const Cloth& cloth, const std::vector<Vec3>& grid,
 TEST(GridForcePass, TheGridBuilderGivesAStencilAndTheOffsetLayoutDoesNot) {
     Scene scene = grid_scene(6, 7);
     EXPECT_TRUE(grid_stencil_usable(build_grid_cloth(scene)));
-    EXPECT_EQ(build_grid_cloth(scene).grid_stencil.directions.size(), 6u);
+    EXPECT_EQ(build_grid_cloth(scene).topology().grid_stencil.directions.size(), 6u);
     scene.cloth.layout = Layout::offset;
     EXPECT_FALSE(grid_stencil_usable(build_cloth(scene)));  // the general pass handles it
 }
@@ -93,7 +93,7 @@ TEST(GridForcePass, MatchesTheGeneralPassWithSomeFamiliesAbsent) {
     scene.shear.enabled = false;
     Cloth no_shear = build_grid_cloth(scene);
     scramble(no_shear, 3);
-    ASSERT_EQ(no_shear.grid_stencil.directions.size(), 4u);
+    ASSERT_EQ(no_shear.topology().grid_stencil.directions.size(), 4u);
     expect_same_to_rounding(no_shear, forces_of(no_shear, ForceField{}),
                             general_forces_of(no_shear, ForceField{}));
     scene.bend.enabled = false;
@@ -126,7 +126,9 @@ TEST(GridForcePass, CoincidentEndsExertNoForceAndMakeNoNaN) {
 
 TEST(GridForcePass, StaleStencilFallsBackToTheGeneralPass) {
     Cloth cloth = build_grid_cloth(grid_scene(5, 5));
-    cloth.spring_groups[0].springs.pop_back();  // edited behind topology_edits' back
+    cloth.edit_topology()
+        .spring_groups[0]
+        .springs.pop_back();  // edited behind topology_edits' back
     EXPECT_FALSE(grid_stencil_usable(cloth));
 }
 
@@ -180,7 +182,7 @@ TEST(GridForcePass, StretchHeadroomIsTheSpringBySpringMinimum) {
     remove_springs_if(cloth, [](const Spring& s) { return s.i % 97 == 0; });
     const double ratio = 5.0;
     double headroom = std::numeric_limits<double>::infinity(), scale = 0.0;
-    for (const SpringGroup& group : cloth.spring_groups)
+    for (const SpringGroup& group : cloth.topology().spring_groups)
         for (const Spring& spring : group.springs) {
             const double length =
                 glm::length(cloth.positions[spring.j] - cloth.positions[spring.i]);

@@ -102,9 +102,9 @@ double baraff_witkin_residual(const Scene& scene, double speed_scale,
     double residual_squared = 0.0, rhs_squared = 0.0;
     for (std::size_t row = 0; row < n; ++row) {
         if (before.is_pinned(row / 3)) continue;
-        double lhs =
-            before.masses[row / 3] * (component(simulation.cloth().velocities[row / 3], row) -
-                                      component(before.velocities[row / 3], row));
+        double lhs = before.topology().masses[row / 3] *
+                     (component(simulation.cloth().velocities[row / 3], row) -
+                      component(before.velocities[row / 3], row));
         double rhs = dt * component(f0[row / 3], row);
         for (std::size_t column = 0; column < n; ++column) {
             const double dv = component(simulation.cloth().velocities[column / 3], column) -
@@ -166,7 +166,7 @@ TEST(ImplicitEuler, StaysBoundedFarPastTheExplicitLimitOnAStiffSheet) {
         Simulation implicit_run(scene);
         ASSERT_TRUE(testing::run_steps(implicit_run, 200)) << multiple;
         double largest = 0.0;
-        for (const SpringGroup& g : implicit_run.cloth().spring_groups)
+        for (const SpringGroup& g : implicit_run.cloth().topology().spring_groups)
             for (const Spring& s : g.springs)
                 largest = std::max(largest, glm::length(implicit_run.cloth().positions[s.j] -
                                                         implicit_run.cloth().positions[s.i]) /

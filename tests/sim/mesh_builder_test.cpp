@@ -89,10 +89,11 @@ TEST_P(GridWrittenAsQuads, GetsTheGridBuildersSpringsAndInteriorMasses) {
             << spring_family_name(family);
     double total = 0.0;
     for (std::size_t p = 0; p < from_mesh.particle_count(); ++p) {
-        total += from_mesh.masses[p];
+        total += from_mesh.topology().masses[p];
         const int r = static_cast<int>(p) / cols, c = static_cast<int>(p) % cols;
         if (r > 0 && r + 1 < rows && c > 0 && c + 1 < cols) {
-            EXPECT_NEAR(from_mesh.masses[p], from_grid.masses[p], 1e-15) << "particle " << p;
+            EXPECT_NEAR(from_mesh.topology().masses[p], from_grid.topology().masses[p], 1e-15)
+                << "particle " << p;
         }
     }
     EXPECT_NEAR(total, density * (rows - 1) * (cols - 1) * spacing * spacing, 1e-15);
@@ -104,16 +105,16 @@ INSTANTIATE_TEST_SUITE_P(Sizes, GridWrittenAsQuads,
 TEST(MeshBuilder, SplitsQuadsAlongTheirFirstDiagonalForDrawing) {
     const Scene scene = mesh_scene("v 0 0 0\nv 0 -1 0\nv 1 -1 0\nv 1 0 0\nf 1 2 3 4\n");
     const Cloth cloth = build_mesh_cloth(scene);
-    ASSERT_EQ(cloth.triangles.size(), 2u);
-    EXPECT_EQ(cloth.triangles[0].a, 0u);
-    EXPECT_EQ(cloth.triangles[0].b, 1u);
-    EXPECT_EQ(cloth.triangles[0].c, 2u);
-    EXPECT_EQ(cloth.triangles[1].a, 0u);
-    EXPECT_EQ(cloth.triangles[1].b, 2u);
-    EXPECT_EQ(cloth.triangles[1].c, 3u);
+    ASSERT_EQ(cloth.topology().triangles.size(), 2u);
+    EXPECT_EQ(cloth.topology().triangles[0].a, 0u);
+    EXPECT_EQ(cloth.topology().triangles[0].b, 1u);
+    EXPECT_EQ(cloth.topology().triangles[0].c, 2u);
+    EXPECT_EQ(cloth.topology().triangles[1].a, 0u);
+    EXPECT_EQ(cloth.topology().triangles[1].b, 2u);
+    EXPECT_EQ(cloth.topology().triangles[1].c, 3u);
     // Four sides, not the split diagonal.
     EXPECT_EQ(spring_set(cloth, SpringFamily::structural).size(), 4u);
-    EXPECT_TRUE(cloth.grid_stencil.directions.empty());
+    EXPECT_TRUE(cloth.topology().grid_stencil.directions.empty());
     EXPECT_EQ(cloth.rows, 1);
     EXPECT_EQ(cloth.cols, 4);
 }
@@ -163,9 +164,10 @@ TEST(MeshBuilder, LumpedMassesSumToDensityTimesArea) {
     scene.cloth.density = 0.25;
     const Cloth cloth = build_mesh_cloth(scene);
     double total = 0.0;
-    for (double m : cloth.masses) total += m;
+    for (double m : cloth.topology().masses) total += m;
     EXPECT_NEAR(total, 0.25 * 1.5, 1e-15);
-    EXPECT_NEAR(cloth.masses[4], 0.25 * 1.0 / 3.0, 1e-15);  // the centre: a third of each fan
+    EXPECT_NEAR(cloth.topology().masses[4], 0.25 * 1.0 / 3.0,
+                1e-15);  // the centre: a third of each fan
 }
 
 TEST(MeshBuilder, PinsByVertexNumberOrGroup) {
@@ -174,13 +176,13 @@ TEST(MeshBuilder, PinsByVertexNumberOrGroup) {
     Scene scene = mesh_scene(obj);
     scene.cloth.pin_preset = PinPreset::vertices;
     scene.cloth.pin_vertices = {4};
-    EXPECT_EQ(build_mesh_cloth(scene).pinned, (std::vector<std::uint32_t>{3}));
+    EXPECT_EQ(build_mesh_cloth(scene).topology().pinned, (std::vector<std::uint32_t>{3}));
     scene.cloth.pin_preset = PinPreset::group;
     scene.cloth.pin_group = "hem";
     const Cloth pinned = build_mesh_cloth(scene);
-    EXPECT_EQ(pinned.pinned, (std::vector<std::uint32_t>{0, 1}));
-    EXPECT_EQ(pinned.inverse_masses[0], 0.0);
-    EXPECT_GT(pinned.inverse_masses[2], 0.0);
+    EXPECT_EQ(pinned.topology().pinned, (std::vector<std::uint32_t>{0, 1}));
+    EXPECT_EQ(pinned.topology().inverse_masses[0], 0.0);
+    EXPECT_GT(pinned.topology().inverse_masses[2], 0.0);
 
     scene.cloth.pin_group = "collar";
     const auto problem = mesh_pin_problem(scene.cloth, *scene.cloth.mesh_data.obj);

@@ -85,7 +85,7 @@ TEST(Simulation, PinnedParticlesNeverMoveUnderAnyIntegrator) {
         Simulation simulation(scene);
         const Cloth initial = simulation.cloth();
         ASSERT_TRUE(testing::run_steps(simulation, 2000)) << integrator_name(integrator);
-        for (std::uint32_t p : initial.pinned) {
+        for (std::uint32_t p : initial.topology().pinned) {
             EXPECT_EQ(simulation.cloth().positions[p], initial.positions[p]);
             EXPECT_EQ(simulation.cloth().velocities[p], Vec3(0.0));
         }

@@ -76,16 +76,18 @@ TEST_F(SceneWithMesh, ReadsTheMeshBesideTheSceneFile) {
     const Cloth cloth = build_cloth(*result.scene);
     EXPECT_EQ(cloth.particle_count(), 4u);
     EXPECT_EQ(cloth.positions[1], Vec3(0.0, 0.0, 0.0));  // (0, -1, 0) moved up by the origin
-    EXPECT_NEAR(cloth.masses[0] + cloth.masses[1] + cloth.masses[2] + cloth.masses[3], 0.5, 1e-15);
+    EXPECT_NEAR(cloth.topology().masses[0] + cloth.topology().masses[1] +
+                    cloth.topology().masses[2] + cloth.topology().masses[3],
+                0.5, 1e-15);
 }
 
 TEST_F(SceneWithMesh, PinsByVertexNumbersOrGroup) {
     SceneLoadResult listed = load("mesh = \"meshes/square.obj\"\npins = [1, 4]\n");
     ASSERT_TRUE(listed.ok()) << listed.error->message();
-    EXPECT_EQ(build_cloth(*listed.scene).pinned, (std::vector<std::uint32_t>{0, 3}));
+    EXPECT_EQ(build_cloth(*listed.scene).topology().pinned, (std::vector<std::uint32_t>{0, 3}));
     SceneLoadResult grouped = load("mesh = \"meshes/square.obj\"\npin_group = \"top\"\n");
     ASSERT_TRUE(grouped.ok()) << grouped.error->message();
-    EXPECT_EQ(build_cloth(*grouped.scene).pinned, (std::vector<std::uint32_t>{0, 3}));
+    EXPECT_EQ(build_cloth(*grouped.scene).topology().pinned, (std::vector<std::uint32_t>{0, 3}));
 }
 
 TEST_F(SceneWithMesh, RefusesPinsThatAreNotInTheMesh) {
@@ -126,8 +128,8 @@ TEST_F(SceneWithMesh, WeighsEveryVertexAlikeGivenParticleMass) {
     ASSERT_TRUE(result.ok()) << result.error->message();
     EXPECT_TRUE(result.scene->cloth.mesh_particle_mass);
     const Cloth cloth = build_cloth(*result.scene);
-    EXPECT_EQ(cloth.masses, std::vector<double>(4, 0.02));
-    EXPECT_EQ(cloth.inverse_masses, std::vector<double>(4, 1.0 / 0.02));
+    EXPECT_EQ(cloth.topology().masses, std::vector<double>(4, 0.02));
+    EXPECT_EQ(cloth.topology().inverse_masses, std::vector<double>(4, 1.0 / 0.02));
     const std::string text = scene_to_toml(*result.scene);
     EXPECT_TRUE(contains(text, "particle_mass = 0.02")) << text;
     EXPECT_FALSE(contains(text, "density")) << text;
@@ -209,7 +211,8 @@ TEST(ShippedMeshes, HangAndDrapeWithoutSinkingIntoTheirColliders) {
             contacts += report.contacts;
         }
         const Cloth& cloth = simulation.cloth();
-        for (std::uint32_t p : cloth.pinned) EXPECT_EQ(cloth.positions[p], start[p]) << name;
+        for (std::uint32_t p : cloth.topology().pinned)
+            EXPECT_EQ(cloth.positions[p], start[p]) << name;
         double deepest = 0.0;  // m
         for (const Collider& collider : simulation.colliders())
             for (const Vec3& x : cloth.positions) {
@@ -222,7 +225,7 @@ TEST(ShippedMeshes, HangAndDrapeWithoutSinkingIntoTheirColliders) {
             EXPECT_GT(contacts, 1000u) << name;
         }
         if (std::string(name) != "round_tablecloth") {
-            EXPECT_FALSE(cloth.pinned.empty()) << name;
+            EXPECT_FALSE(cloth.topology().pinned.empty()) << name;
         }
     }
 }

@@ -21,7 +21,7 @@ using Pairs = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
 Pairs brute_force_pairs(const Cloth& cloth, double thickness) {
     Pairs pairs;
     auto joined = [&](std::uint32_t a, std::uint32_t b) {
-        for (const SpringGroup& g : cloth.spring_groups)
+        for (const SpringGroup& g : cloth.topology().spring_groups)
             for (const Spring& s : g.springs)
                 if ((s.i == a && s.j == b) || (s.i == b && s.j == a)) return true;
         return false;
@@ -194,7 +194,7 @@ Cloth loose_layer(int side, double spacing, double y) {
     scene.cloth.origin = {0.0, y, 0.0};
     scene.cloth.pin_preset = PinPreset::none;
     Cloth cloth = build_grid_cloth(scene);
-    cloth.spring_groups.clear();
+    cloth.edit_topology().spring_groups.clear();
     return cloth;
 }
 
@@ -205,8 +205,8 @@ TEST(SelfCollision, APairThatWentThroughEachOtherInOneStepIsPutBackOnItsSide) {
     Cloth cloth = loose_layer(1, 1.0, 0.0);
     cloth.positions.resize(2);
     cloth.velocities.assign(2, Vec3(0.0));
-    cloth.masses.assign(2, 0.01);
-    cloth.inverse_masses.assign(2, 100.0);
+    cloth.edit_topology().masses.assign(2, 0.01);
+    cloth.edit_topology().inverse_masses.assign(2, 100.0);
     const double thickness = 0.01;
     const std::vector<Vec3> start = {Vec3(0.0, 0.0, 0.0), Vec3(0.0, 3 * thickness, 0.0)};
     cloth.positions = {Vec3(0.001, 3 * thickness, 0.0), Vec3(-0.001, 0.0, 0.0)};
@@ -240,9 +240,9 @@ TEST(SelfCollision, AFastLayerDoesNotPassThroughAStillOneInOneStep) {
     both.positions = end;
     both.velocities.assign(2 * half, Vec3(0.0));
     for (std::size_t p = half; p < 2 * half; ++p) both.velocities[p] = Vec3(0.0, -3.6, 0.0);
-    both.masses.assign(2 * half, 0.001);
-    both.inverse_masses.assign(2 * half, 1000.0);
-    for (std::size_t p = 0; p < half; ++p) both.inverse_masses[p] = 0.0;  // pinned
+    both.edit_topology().masses.assign(2 * half, 0.001);
+    both.edit_topology().inverse_masses.assign(2 * half, 1000.0);
+    for (std::size_t p = 0; p < half; ++p) both.edit_topology().inverse_masses[p] = 0.0;  // pinned
     SelfCollision pass(thickness);
     EXPECT_GT(pass.resolve(both, {}, nullptr, start), 0u);
     for (std::size_t p = half; p < 2 * half; ++p) {

@@ -20,7 +20,7 @@ TEST(Tearing, BreaksExactlyTheSpringsPastTheLimit) {
     // Spring 0-1 at 1.7x, spring 1-2 at 1.5x (after particle 1 moved), spring 2-3 at 1.6x + ε.
     cloth.positions = {{0, 0, 0}, {1.7, 0, 0}, {3.2, 0, 0}, {4.8 + 1e-9, 0, 0}};
     EXPECT_EQ(tear_overstretched_springs(cloth, 1.6), 2u);
-    const auto& survivors = cloth.spring_groups[0].springs;
+    const auto& survivors = cloth.topology().spring_groups[0].springs;
     ASSERT_EQ(survivors.size(), 1u);
     EXPECT_EQ(survivors[0].i, 1u);
     EXPECT_EQ(survivors[0].j, 2u);
@@ -45,19 +45,19 @@ TEST(Tearing, AHeavyPullTearsTheSheetInsteadOfDiverging) {
     EXPECT_EQ(simulation.cloth().spring_count(), initial - torn);
     // Every triangle left has all of its structural edges (and so is drawn and pickable).
     const Cloth& cloth = simulation.cloth();
-    EXPECT_LT(cloth.triangles.size(), 2u * 9 * 9);
+    EXPECT_LT(cloth.topology().triangles.size(), 2u * 9 * 9);
     auto is_spring = [&](std::uint32_t a, std::uint32_t b) {
-        for (const Spring& s : cloth.spring_groups[0].springs)
+        for (const Spring& s : cloth.topology().spring_groups[0].springs)
             if ((s.i == a && s.j == b) || (s.i == b && s.j == a)) return true;
         return false;
     };
-    for (const Triangle& t : cloth.triangles) {
+    for (const Triangle& t : cloth.topology().triangles) {
         // Each grid triangle has one horizontal and one vertical structural edge and a diagonal.
         int structural_edges = is_spring(t.a, t.b) + is_spring(t.b, t.c) + is_spring(t.c, t.a);
         EXPECT_EQ(structural_edges, 2);
     }
     // What is left is within the limit.
-    for (const Spring& s : simulation.cloth().spring_groups[0].springs)
+    for (const Spring& s : simulation.cloth().topology().spring_groups[0].springs)
         EXPECT_LE(
             glm::length(simulation.cloth().positions[s.j] - simulation.cloth().positions[s.i]),
             1.5 * s.rest_length);

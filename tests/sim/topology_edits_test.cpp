@@ -61,7 +61,7 @@ TEST(SpringFamilyToggle, OnAgainRestoresTheFamilyWithItsMaterial) {
     EXPECT_EQ(after->stiffness, 123.0);
     EXPECT_EQ(after->damping, 0.25);
     // Groups stay in family order, so the force pass sums in the same order as a fresh build.
-    EXPECT_EQ(simulation.cloth().spring_groups.front().family, SpringFamily::structural);
+    EXPECT_EQ(simulation.cloth().topology().spring_groups.front().family, SpringFamily::structural);
 }
 
 TEST(SpringFamilyToggle, AFamilySwitchedOnAfterACutDoesNotJoinTheCut) {
@@ -86,7 +86,7 @@ TEST(SpringFamilyToggle, AFamilySwitchedOnAfterACutDoesNotJoinTheCut) {
     const std::size_t bend_whole = rows * (cols - 2) + (rows - 2) * cols;
     EXPECT_EQ(simulation.cloth().find_group(SpringFamily::bend)->springs.size(),
               bend_whole - 2u * rows);
-    for (const SpringGroup& group : simulation.cloth().spring_groups)
+    for (const SpringGroup& group : simulation.cloth().topology().spring_groups)
         for (const Spring& s : group.springs) {
             const bool left_i = static_cast<int>(s.i % cols) <= cut_after;
             const bool left_j = static_cast<int>(s.j % cols) <= cut_after;

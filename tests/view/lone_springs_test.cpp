@@ -45,7 +45,7 @@ TEST(LoneSprings, MeshesByTopology) {
         // Every triangle at the far end of the first bend spring goes: the spring no longer
         // touches the surface there.
         const Spring bend = cloth.find_group(SpringFamily::bend)->springs.front();
-        std::erase_if(cloth.triangles, [&](const Triangle& t) {
+        std::erase_if(cloth.edit_topology().triangles, [&](const Triangle& t) {
             return t.a == bend.j || t.b == bend.j || t.c == bend.j;
         });
         const ClothView cut(cloth);
@@ -60,15 +60,16 @@ TEST(LoneSprings, MeshesByTopology) {
 template <typename Cut>
 void remove_springs(Cloth& cloth, Cut cut) {
     auto has_edge = [&](std::uint32_t a, std::uint32_t b) {
-        for (const SpringGroup& group : cloth.spring_groups)
+        for (const SpringGroup& group : cloth.topology().spring_groups)
             for (const Spring& s : group.springs)
                 if (((s.i == a && s.j == b) || (s.i == b && s.j == a)) && cut(s)) return true;
         return false;
     };
-    std::erase_if(cloth.triangles, [&](const Triangle& t) {
+    std::erase_if(cloth.edit_topology().triangles, [&](const Triangle& t) {
         return has_edge(t.a, t.b) || has_edge(t.b, t.c) || has_edge(t.c, t.a);
     });
-    for (SpringGroup& group : cloth.spring_groups) std::erase_if(group.springs, cut);
+    for (SpringGroup& group : cloth.edit_topology().spring_groups)
+        std::erase_if(group.springs, cut);
 }
 
 TEST(LoneSprings, AHoleShowsTheSpringsThatCrossIt) {
@@ -99,10 +100,10 @@ TEST(LoneSprings, APiecesLastSpringIsDrawnInTheShadedView) {
     Cloth cloth = build_cloth(sheet(Layout::grid, Orientation::vertical));
     const std::uint32_t kept_i = 4 * 7 + 3, kept_j = kept_i + 7;  // (4, 3)-(5, 3), vertical
     Cloth bare = cloth;
-    bare.triangles.clear();
+    bare.edit_topology().triangles.clear();
     remove_springs(bare, [](const Spring&) { return true; });
     Cloth thread = cloth;
-    thread.triangles.clear();
+    thread.edit_topology().triangles.clear();
     remove_springs(thread, [&](const Spring& s) { return !(s.i == kept_i && s.j == kept_j); });
     ASSERT_EQ(thread.spring_count(), 1u);
 

@@ -99,7 +99,7 @@ void ImplicitContacts::apply_friction(const Cloth& cloth, implicit_kernel::Job& 
         const double sliding_speed = glm::length(sliding);
         if (sliding_speed <= 0.0) continue;
         const double stopped_by =
-            contact.friction * impulse / cloth.masses[contact.particle];  // m/s
+            contact.friction * impulse / cloth.topology().masses[contact.particle];  // m/s
         const double scale = std::max(0.0, 1.0 - stopped_by / sliding_speed);
         write(job.solution, i, normal_speed * n + scale * sliding);
     }

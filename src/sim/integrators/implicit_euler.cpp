@@ -40,9 +40,9 @@ void multiply_implicit_system(const Cloth& cloth, const IntegratorWorkspace& wor
                               double dt, std::span<const Vec3> vector, std::span<Vec3> product) {
     const std::size_t count = cloth.particle_count();
     for (std::size_t p = 0; p < count; ++p)
-        product[p] = (cloth.masses[p] + dt * air_drag) * vector[p];
+        product[p] = (cloth.topology().masses[p] + dt * air_drag) * vector[p];
     std::size_t s = 0;
-    for (const SpringGroup& group : cloth.spring_groups) {
+    for (const SpringGroup& group : cloth.topology().spring_groups) {
         for (const Spring& spring : group.springs) {
             const ImplicitSpringTerms& terms = work.implicit_springs[s++];
             // (h² K + h C) applied to the relative vector of the two ends.
@@ -54,7 +54,7 @@ void multiply_implicit_system(const Cloth& cloth, const IntegratorWorkspace& wor
             product[spring.j] -= block;
         }
     }
-    for (std::uint32_t p : cloth.pinned) product[p] = Vec3(0.0);
+    for (std::uint32_t p : cloth.topology().pinned) product[p] = Vec3(0.0);
 }
 
 namespace {
@@ -79,7 +79,7 @@ bool some_spring_longer_than(const Cloth& cloth, double ratio, WorkerPool* pool)
 double largest_linearisation_error(const Cloth& cloth, std::span<const Vec3> start,
                                    WorkerPool* pool) {
     double largest = 0.0;
-    for (const SpringGroup& group : cloth.spring_groups)
+    for (const SpringGroup& group : cloth.topology().spring_groups)
         largest = reduce_in_chunks(
             pool, group.springs.size(), largest,
             [&](std::size_t begin, std::size_t end) {
@@ -176,7 +176,7 @@ void take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
 
     // Per-spring terms of h² K + h C, and the right-hand side b = h (f0 - h K v0).
     std::size_t s = 0;
-    for (const SpringGroup& group : cloth.spring_groups) {
+    for (const SpringGroup& group : cloth.topology().spring_groups) {
         for (const Spring& spring : group.springs) {
             const Vec3 d = cloth.positions[spring.j] - cloth.positions[spring.i];
             const double length = glm::length(d);
@@ -196,7 +196,7 @@ void take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
     std::span<Vec3> b = work.implicit_rhs;
     for (std::size_t p = 0; p < count; ++p) b[p] = dt * work.forces[p];
     s = 0;
-    for (const SpringGroup& group : cloth.spring_groups) {
+    for (const SpringGroup& group : cloth.topology().spring_groups) {
         for (const Spring& spring : group.springs) {
             const ImplicitSpringTerms& terms = work.implicit_springs[s++];
             const Vec3 relative = cloth.velocities[spring.i] - cloth.velocities[spring.j];
@@ -209,12 +209,12 @@ void take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
             b[spring.j] += block;
         }
     }
-    for (std::uint32_t p : cloth.pinned) b[p] = Vec3(0.0);
+    for (std::uint32_t p : cloth.topology().pinned) b[p] = Vec3(0.0);
 
     // Conjugate gradient from the warm start.
     std::span<Vec3> x = work.implicit_delta_v, r = work.implicit_residual,
                     d = work.implicit_direction, q = work.implicit_product;
-    for (std::uint32_t p : cloth.pinned) x[p] = Vec3(0.0);
+    for (std::uint32_t p : cloth.topology().pinned) x[p] = Vec3(0.0);
     multiply_implicit_system(cloth, work, field.air_drag, dt, x, q);
     for (std::size_t p = 0; p < count; ++p) r[p] = b[p] - q[p], d[p] = r[p];
     const double b_norm = std::sqrt(inner(b, b));

@@ -137,7 +137,8 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
                               WorkerPool* pool) {
     if (!structured_implicit_solve() || !field.colliders.empty() || !grid_stencil_usable(cloth))
         return false;
-    if (cloth.grid_stencil.directions.size() > implicit_kernel::max_directions) return false;
+    if (cloth.topology().grid_stencil.directions.size() > implicit_kernel::max_directions)
+        return false;
     solver.prepare(cloth.rows, cloth.cols);
     implicit_kernel::Job& job = solver.job;
     // f(x0, v = 0): gravity, the wind's push and the elastic springs; the dampers are
@@ -150,8 +151,8 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     job.dt = dt;
     job.air_drag = field.air_drag;
     job.direction_count = 0;
-    for (const GridStencilDirection& direction : cloth.grid_stencil.directions) {
-        const SpringGroup& group = cloth.spring_groups[direction.group];
+    for (const GridStencilDirection& direction : cloth.topology().grid_stencil.directions) {
+        const SpringGroup& group = cloth.topology().spring_groups[direction.group];
         implicit_kernel::DirectionTerms& d = job.directions[job.direction_count++];
         d.row_step = direction.row_step;
         d.col_step = direction.col_step;
@@ -168,8 +169,8 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     job.positions = &cloth.positions.data()->x;
     job.velocities = &cloth.velocities.data()->x;
     job.static_forces = &solver.static_forces.data()->x;
-    job.masses = cloth.masses.data();
-    job.inverse_masses = cloth.inverse_masses.data();
+    job.masses = cloth.topology().masses.data();
+    job.inverse_masses = cloth.topology().inverse_masses.data();
 
     // The drag handle, f = w m (ω² (goal - x) - ω v), with the goal brought within
     // max_speed × h of the particle (drag.h): its spring to the goal goes into b, its
@@ -188,7 +189,7 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
         for (std::size_t k = 0; k < drag->particles.size(); ++k) {
             const std::uint32_t p = drag->particles[k];
             solver.static_forces[p] +=
-                (drag->weights[k] * cloth.masses[p] * omega * omega) * hand_reach(k);
+                (drag->weights[k] * cloth.topology().masses[p] * omega * omega) * hand_reach(k);
         }
     }
 
@@ -201,7 +202,7 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
         const double omega = drag->angular_frequency;
         for (std::size_t k = 0; k < drag->particles.size(); ++k) {
             const std::uint32_t p = drag->particles[k];
-            const double share = drag->weights[k] * cloth.masses[p];
+            const double share = drag->weights[k] * cloth.topology().masses[p];
             job.mass_diagonal[solver.pad + p] +=
                 static_cast<float>(dt * share * omega + dt * dt * share * omega * omega);
         }

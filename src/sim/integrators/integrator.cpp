@@ -2,11 +2,35 @@
 
 namespace weft {
 
-void IntegratorWorkspace::resize(std::size_t particle_count) {
-    for (std::vector<Vec3>* array :
-         {&forces, &accelerations, &previous_positions, &stage_positions, &stage_velocities,
-          &position_rate_sum, &velocity_rate_sum, &next_positions, &next_velocities})
-        array->assign(particle_count, Vec3(0.0));
+void IntegratorWorkspace::resize(std::size_t particle_count, Integrator integrator) {
+    using Method = Integrator;
+    const bool rk4 = integrator == Method::rk4;
+    // Which arrays each method reads (integrator.h); every method evaluates forces.
+    const std::pair<std::vector<Vec3>*, bool> arrays[] = {
+        {&forces, true},
+        {&accelerations, integrator == Method::velocity_verlet},
+        {&previous_positions, integrator == Method::verlet},
+        {&stage_positions, rk4},
+        {&stage_velocities, rk4 || integrator == Method::velocity_verlet},
+        {&position_rate_sum, rk4},
+        {&velocity_rate_sum, rk4},
+        {&next_positions, integrator == Method::symplectic_euler},
+        {&next_velocities, integrator == Method::symplectic_euler},
+    };
+    for (auto [array, used] : arrays) {
+        if (used)
+            array->assign(particle_count, Vec3(0.0));
+        else
+            std::vector<Vec3>().swap(*array);
+    }
+    if (integrator != Method::implicit_euler) {  // implicit Euler sizes its own on first use
+        for (std::vector<Vec3>* array :
+             {&implicit_delta_v, &implicit_rhs, &implicit_residual, &implicit_direction,
+              &implicit_product, &implicit_step_start_positions, &implicit_step_start_velocities})
+            std::vector<Vec3>().swap(*array);
+        std::vector<ImplicitSpringTerms>().swap(implicit_springs);
+        implicit_grid = ImplicitGridSolver{};
+    }
     history_valid = false;
 }
 

@@ -65,7 +65,10 @@ struct IntegratorWorkspace {
     std::uint64_t force_evaluations = 0;  // total calls of the force pass, for cost studies
     WorkerPool* pool = nullptr;           // threads for the force pass (owned by Simulation)
 
-    void resize(std::size_t particle_count);
+    // Sizes the arrays `integrator` steps with for `particle_count` particles (zeroed) and
+    // frees every other method's, so a workspace, and each copy of it (a snapshot, a run side
+    // by side), holds one method's scratch only. Carried history becomes invalid.
+    void resize(std::size_t particle_count, Integrator integrator);
 };
 
 // Runs body(begin, end) over the particles [0, count), split between the pool's threads when

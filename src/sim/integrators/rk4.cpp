@@ -15,7 +15,7 @@ void step_rk4(Cloth& cloth, const ForceField& field, double dt, IntegratorWorksp
     Vec3* stage_v = work.stage_velocities.data();
     Vec3* x_rate_sum = work.position_rate_sum.data();
     Vec3* v_rate_sum = work.velocity_rate_sum.data();
-    const double* inverse_mass = cloth.inverse_masses.data();
+    const double* inverse_mass = cloth.topology().inverse_masses.data();
 
     // Stage s is evaluated at y_n + stage_offset[s] h k_s; its slope enters with weight[s].
     constexpr double weight[4] = {1.0, 2.0, 2.0, 1.0};

@@ -26,7 +26,7 @@ void step_symplectic_euler(Cloth& cloth, const ForceField& field, double dt,
     Vec3* x = cloth.positions.data();
     Vec3* v = cloth.velocities.data();
     const Vec3* f = work.forces.data();
-    const double* inverse_mass = cloth.inverse_masses.data();
+    const double* inverse_mass = cloth.topology().inverse_masses.data();
     for_particle_ranges(work, count, [&](std::size_t begin, std::size_t end) {
         for (std::size_t p = begin; p < end; ++p) {
             v[p] += dt * inverse_mass[p] * f[p];

@@ -22,7 +22,7 @@ void step_velocity_verlet(Cloth& cloth, const ForceField& field, double dt,
     Vec3* v = cloth.velocities.data();
     Vec3* a = work.accelerations.data();
     Vec3* v_predicted = work.stage_velocities.data();
-    const double* inverse_mass = cloth.inverse_masses.data();
+    const double* inverse_mass = cloth.topology().inverse_masses.data();
     const double half_dt = 0.5 * dt;
 
     if (!work.history_valid) {

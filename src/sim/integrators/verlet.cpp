@@ -19,7 +19,7 @@ void step_verlet(Cloth& cloth, const ForceField& field, double dt, IntegratorWor
     Vec3* x = cloth.positions.data();
     Vec3* v = cloth.velocities.data();
     Vec3* x_previous = work.previous_positions.data();
-    const double* inverse_mass = cloth.inverse_masses.data();
+    const double* inverse_mass = cloth.topology().inverse_masses.data();
 
     evaluate_forces(cloth, field, cloth.positions, cloth.velocities, work);
     const Vec3* f = work.forces.data();

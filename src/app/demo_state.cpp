@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 #include "app/atomic_file.h"
 #include "app/hand_tools.h"
@@ -523,7 +524,17 @@ Scene DemoState::scene_to_save() const {
 }
 
 bool DemoState::save_scene(const std::string& path, bool overwrite, std::string& error) const {
-    return write_file_atomically(path, scene_to_toml(scene_to_save()), overwrite, error);
+    Scene saved = scene_to_save();
+    if (!saved.cloth.mesh.empty()) {
+        // The mesh as the loader reads it, relative to the scene file's folder: the saved
+        // scene and its mesh can then move together, as the shipped ones do.
+        namespace fs = std::filesystem;
+        std::error_code failed;
+        const fs::path folder = fs::absolute(fs::path(path), failed).parent_path();
+        const fs::path relative = fs::path(saved.cloth.mesh).lexically_relative(folder);
+        if (!failed && !relative.empty()) saved.cloth.mesh = relative.generic_string();
+    }
+    return write_file_atomically(path, scene_to_toml(saved), overwrite, error);
 }
 
 }  // namespace weft::app

@@ -217,6 +217,10 @@ TEST(DemoState, ASavedSceneLoadsBackToTheSameParameters) {
         ASSERT_TRUE(loaded.ok()) << loaded.error->message();
         EXPECT_TRUE(*loaded.scene == state.scene_to_save()) << entry.path();
         EXPECT_EQ(loaded.scene->structural.damping, 0.123456789012345678);
+        // A mesh is named relative to the saved scene, as a scene file names it.
+        if (!state.scene_to_save().cloth.mesh.empty()) {
+            EXPECT_EQ(read_file(saved).find("mesh = \"/"), std::string::npos) << entry.path();
+        }
     }
 }
 

@@ -7,6 +7,13 @@ namespace weft::app {
 void LastEdit::answer(std::string_view control, const std::optional<std::string>& error) {
     control_ = control;
     refusal_ = error ? refusal_text(*error) : std::string();
+    unseen_ = !refusal_.empty();
+}
+
+bool LastEdit::newly_refused() {
+    const bool unseen = unseen_;
+    unseen_ = false;
+    return unseen;
 }
 
 const std::string& LastEdit::refusal_under(std::string_view control) const {

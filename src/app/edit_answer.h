@@ -19,10 +19,16 @@ class LastEdit {
     // What to say under `control`: empty unless the last edit was that control's and was
     // refused.
     const std::string& refusal_under(std::string_view control) const;
+    // Whether the last edit's refusal has yet to be seen: true the first time this is asked
+    // after a refusal, false after that and after a taken edit. The panel scrolls a new
+    // refusal whole into sight once (a control at the panel's foot left all but its first
+    // line below the visible area), and no more, so the user can scroll away from it.
+    bool newly_refused();
 
   private:
     std::string control_;  // the control that made the last edit
     std::string refusal_;  // its refusal as the panel says it; empty when it was taken
+    bool unseen_ = false;  // refusal_ is not empty and newly_refused() has not been asked
 };
 
 // The loader's error as the panel says it next to the control: "refused: " and the reason,

@@ -24,7 +24,12 @@ void answer_edit(std::string_view control, const std::optional<std::string>& err
 
 void refusal_below(std::string_view control) {
     const std::string& refusal = last_edit.refusal_under(control);
-    if (!refusal.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", refusal.c_str());
+    if (refusal.empty()) return;
+    ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", refusal.c_str());
+    // A new refusal cut off by the panel's foot is scrolled whole into sight, once.
+    if (last_edit.newly_refused() &&
+        ImGui::GetItemRectMax().y > ImGui::GetWindowDrawList()->GetClipRectMax().y)
+        ImGui::SetScrollHereY(1.0f);
 }
 
 bool slider_log(const char* label, double& value, double low, double high,

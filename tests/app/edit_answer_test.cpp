@@ -37,6 +37,24 @@ TEST(EditAnswer, ATakenEditOfTheSameControlClearsItsRefusal) {
     EXPECT_EQ(last.refusal_under("cloth.particle_mass"), "");
 }
 
+// The panel scrolls a refusal into sight the first frame it is drawn and never again, so a
+// user who scrolls away from it is not pulled back every frame.
+TEST(EditAnswer, ANewRefusalIsBroughtIntoSightOnceAndATakenEditNever) {
+    LastEdit last;
+    EXPECT_FALSE(last.newly_refused());  // nothing edited yet
+    last.answer("springs.structural.stiffness", negative_stiffness);
+    EXPECT_TRUE(last.newly_refused());
+    EXPECT_FALSE(last.newly_refused());  // the next frames: shown already
+    EXPECT_NE(last.refusal_under("springs.structural.stiffness"), "");  // and still said
+    last.answer("springs.structural.stiffness", negative_stiffness);    // refused again
+    EXPECT_TRUE(last.newly_refused());
+    last.answer("forces.air_drag", std::nullopt);
+    EXPECT_FALSE(last.newly_refused());
+    last.answer("cloth.particle_mass", "error: --set cloth.particle_mass: must be > 0, got 0");
+    last.answer("cloth.particle_mass", std::nullopt);  // taken before a frame drew the refusal
+    EXPECT_FALSE(last.newly_refused());
+}
+
 TEST(EditAnswer, AMessageWithoutTheCommandLinesLeadIsKeptWhole) {
     EXPECT_EQ(refusal_text("drag radius must be in (0, 10] m, got 20"),
               "refused: drag radius must be in (0, 10] m, got 20");

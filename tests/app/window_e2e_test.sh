@@ -13,7 +13,9 @@
 #      with it) is shown whole beside the panel, none of it under the panel;
 #   7. a refused edit (-5 typed into a stiffness) is said under that slider, whole;
 #   8. the panel's pause and step buttons pause and step the run, and its plots (energy,
-#      largest stretch, ms per frame) hold still while paused.
+#      largest stretch, ms per frame) hold still while paused;
+#   9. a 2048 x 2048 grid applied in the panel is refused, said whole under Apply at the
+#      panel's foot, and the sheet runs on as it was.
 # Usage: window_e2e_test.sh WEFT PNG_DIFF SOURCE_DIR PNG_COLOUR_COUNT
 set -uo pipefail
 weft=$(realpath "$1")
@@ -326,6 +328,47 @@ echo "plots: $running of their pixels changed over 0.5 s running, $paused over 1
 check awk -v f="$running" 'BEGIN { exit !(f > 0.01) }'
 check awk -v f="$paused" 'BEGIN { exit !(f == 0) }'
 check awk -v f="$one_step" 'BEGIN { exit !(f > 0.001) }'
+
+# --- 9. a grid the window cannot step is refused, and said whole -----------------------------
+# Issue 18: the panel built a 2048 x 2048 grid (about 10 s and 1.7 GB, the window frozen).
+# It is refused before anything is built (src/app/grid_edit.h). With "materials" folded
+# (its header at y = 339) the grid section opens under its header (y = 362): rows at
+# y = 385, cols at y = 408, and with 2048 x 2048 typed (the limit's warning wrapping to two
+# lines) Apply at y = 570, so close to the window's foot that its refusal, five lines in
+# the 300 px panel, would be cut off after its first: the panel must scroll it whole into
+# sight. Then a dump of the running sheet when the window closes still holds its 16 x 16
+# particles.
+type_into_field() {
+  xdotool mousemove --window "$window" "$1" "$2"
+  sleep 0.2
+  hold mouse 1
+  sleep 0.2
+  hold key ctrl+a
+  xdotool type --delay 100 -- "$3"
+  hold key Return
+  sleep 0.4
+}
+start_weft grid
+xdotool windowfocus --sync "$window"
+click_at 100 339   # fold "materials"
+click_at 100 362   # open "grid (rebuilt on apply)"
+type_into_field 50 385 2048
+type_into_field 50 408 2048
+click_at 100 570   # apply
+xdotool mousemove --window "$window" 550 300
+sleep 0.3
+shots_before=$(ls "$work/grid"/weft-screenshot-*.png 2>/dev/null | wc -l)
+shoot_window grid
+shots_after=$(ls "$work/grid"/weft-screenshot-*.png | wc -l)
+quit_weft
+refusal_lines=$("$png_colour_count" --lines "$window_shot" $refusal_red 0 $panel_right)
+refusal_beyond=$("$png_colour_count" "$window_shot" $refusal_red $panel_right 800)
+particles=$(($(wc -l <"$work/grid/state.csv") - 1))
+echo "a 2048 x 2048 grid applied: its refusal shows $refusal_lines lines in the panel, $refusal_beyond pixels beyond it; the sheet has $particles particles"
+check test "$shots_after" -eq $((shots_before + 1))   # the window still answers
+check test "$refusal_lines" -eq 5
+check test "$refusal_beyond" -eq 0
+check test "$particles" -eq 256
 
 echo "$passes passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -2,7 +2,9 @@
 // buttons), how many steps the frame takes, and what the frame measures for the HUD.
 #include "app/demo_state.h"
 
-#include "sim/divergence.h"
+#include <cmath>
+
+#include "app/status_text.h"
 #include "sim/energy.h"
 
 namespace weft::app {
@@ -12,15 +14,14 @@ void DemoState::measure_frame(int steps) {
     // Measured, not coloured: the strain colours cost a 256² sheet's frame 7 % of its time.
     // On the simulation's threads, and both from one pass over the springs: at 256² a pass
     // reads 390 000 of them (the two passes took 4.9 % of the window's time there).
-    double energy = 0.0;
-    if (steps > 0) {
-        const EnergyAndStretch measures =
-            measure_energy_and_stretch(cloth, simulation.force_field(), simulation.pool());
-        energy = measures.energy.total();
-        statistics.stretch_ratio = measures.largest_stretch_ratio;
-    } else {
-        statistics.stretch_ratio = largest_stretch_ratio(cloth, simulation.pool());
-    }
+    // Paused, the energy goes unused, but the stretch is still measured (a cut shows at once).
+    const EnergyAndStretch measures =
+        measure_energy_and_stretch(cloth, simulation.force_field(), simulation.pool());
+    const double energy = steps > 0 ? measures.energy.total() : 0.0;
+    statistics.stretch_ratio = measures.largest_stretch_ratio;
+    statistics.stretch_place = std::isfinite(measures.largest_stretch_ratio)
+                                   ? stretch_place_text(cloth, measures.most_stretched)
+                                   : std::string();
     statistics.plots.add_frame(steps, energy, statistics.stretch_ratio,
                                statistics.sim_seconds + statistics.raster_seconds);
 }

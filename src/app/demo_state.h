@@ -33,6 +33,7 @@ struct DemoStatistics {
     bool behind = false;          // the step budget cut the last frame short
     // largest spring length / rest length at the last frame's end (NaN without springs)
     double stretch_ratio = 0.0;
+    std::string stretch_place;  // where that spring is (stretch_place_text)
     FramePlots plots;  // energy, largest stretch and work per frame, over frames that stepped
 };
 

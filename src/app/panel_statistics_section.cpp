@@ -45,6 +45,7 @@ void statistics_section(DemoState& state) {
     // The stretch is measured every frame, so a cut while paused shows at once.
     std::snprintf(overlay, sizeof overlay, "%s", stretch_text(s.stretch_ratio).c_str());
     plot("##stretch", plots.stretch_percent, overlay);
+    if (!s.stretch_place.empty()) ImGui::TextDisabled("  %s", s.stretch_place.c_str());
     if (!plots.frame_milliseconds.empty()) {
         std::snprintf(overlay, sizeof overlay, "%.2f ms a frame stepping + drawing",
                       plots.frame_milliseconds.latest());

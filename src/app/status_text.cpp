@@ -35,6 +35,14 @@ std::string stretch_text(double largest_stretch_ratio) {
     return text;
 }
 
+std::string stretch_place_text(const Cloth& cloth, const Spring& spring) {
+    const std::size_t count = cloth.particle_count();
+    if (spring.i >= count || spring.j >= count) return {};
+    const bool i_pinned = cloth.is_pinned(spring.i), j_pinned = cloth.is_pinned(spring.j);
+    const std::uint32_t free_end = i_pinned ? spring.j : spring.i;
+    return "at " + particle_name(cloth, free_end) + (i_pinned || j_pinned ? ", beside a pin" : "");
+}
+
 std::string ascii_text(std::string_view utf8) {
     struct Spelling {
         std::string_view sign, ascii;

@@ -29,6 +29,10 @@ std::optional<std::string> linear_solve_text(const Simulation& simulation);
 // "largest stretch 37.6 %" at rest left a newcomer wondering what was stretched, and over
 // what.
 std::string stretch_text(double largest_stretch_ratio);
+// Where that spring is, for the line under it: "at particle (row 1, col 0), beside a pin"
+// (on a mesh "at vertex 12"), naming its end that is free to move. At rest the most
+// stretched springs are the ones holding the sheet up: next to its pins.
+std::string stretch_place_text(const Cloth& cloth, const Spring& spring);
 
 // `utf8` with the signs weft's messages use spelled in ASCII ("—" as "-", "×" as "x", "²" as
 // "2", "·" as ".", "…" as "...", "Δ" as "d", "°" as " deg"): the window's font (Dear ImGui's

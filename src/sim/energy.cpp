@@ -37,8 +37,10 @@ EnergyAndStretch measure_energy_and_stretch(const Cloth& cloth, const ForceField
     struct SpringPart {
         double elastic = 0.0;
         double largest = -std::numeric_limits<double>::infinity();
+        const Spring* spring = nullptr;  // the first one as stretched as `largest`
     };
     double largest = -std::numeric_limits<double>::infinity();
+    const Spring* most_stretched = nullptr;
     for (const SpringGroup& group : cloth.topology().spring_groups) {
         const SpringPart group_part = reduce_in_chunks(
             pool, group.springs.size(), SpringPart{},
@@ -50,18 +52,29 @@ EnergyAndStretch measure_energy_and_stretch(const Cloth& cloth, const ForceField
                         glm::length(cloth.positions[spring.j] - cloth.positions[spring.i]);
                     const double extension = length - spring.rest_length;
                     part.elastic += 0.5 * group.stiffness * extension * extension;
-                    part.largest = std::max(part.largest, length / spring.rest_length);
+                    const double ratio = length / spring.rest_length;
+                    if (ratio > part.largest) {  // as std::max: a NaN ratio never wins
+                        part.largest = ratio;
+                        part.spring = &spring;
+                    }
                 }
                 return part;
             },
             [](SpringPart a, const SpringPart& b) {
                 a.elastic += b.elastic;
-                a.largest = std::max(a.largest, b.largest);
+                if (b.largest > a.largest) {  // a's chunk comes first: ties keep it
+                    a.largest = b.largest;
+                    a.spring = b.spring;
+                }
                 return a;
             });
         energy.elastic += group_part.elastic;
-        largest = std::max(largest, group_part.largest);
+        if (group_part.largest > largest) {
+            largest = group_part.largest;
+            most_stretched = group_part.spring;
+        }
     }
+    if (most_stretched) measures.most_stretched = *most_stretched;
     measures.largest_stretch_ratio =
         std::isfinite(largest) ? largest : std::numeric_limits<double>::quiet_NaN();
     return measures;

@@ -24,6 +24,9 @@ Energy measure_energy(const Cloth& cloth, const ForceField& field, WorkerPool* p
 struct EnergyAndStretch {
     Energy energy;
     double largest_stretch_ratio = 0.0;  // NaN when not finite or when there is no spring
+    // The spring stretched that much (the first such, in group and spring order): where a
+    // reader of the ratio looks. Meaningless when the ratio is NaN.
+    Spring most_stretched{0, 0, 0.0};
 };
 EnergyAndStretch measure_energy_and_stretch(const Cloth& cloth, const ForceField& field,
                                             WorkerPool* pool = nullptr);

@@ -37,15 +37,16 @@ void statistics_section(DemoState& state) {
     if (auto solve = linear_solve_text(state.simulation)) ImGui::TextUnformatted(solve->c_str());
     // The plots gain a sample for each frame that stepped, so they hold still while paused.
     const FramePlots& plots = s.plots;
-    char overlay[96];
+    char overlay[192];
     if (!plots.energy.empty()) {  // measured only on frames that step
         std::snprintf(overlay, sizeof overlay, "energy %.4g J", plots.energy.latest());
         plot("##energy", plots.energy, overlay);
     }
     // The stretch is measured every frame, so a cut while paused shows at once.
-    std::snprintf(overlay, sizeof overlay, "%s", stretch_text(s.stretch_ratio).c_str());
+    // Where that spring is goes on the plot's second line: the panel's rows stay put.
+    std::snprintf(overlay, sizeof overlay, "%s%s%s", stretch_text(s.stretch_ratio).c_str(),
+                  s.stretch_place.empty() ? "" : "\n", s.stretch_place.c_str());
     plot("##stretch", plots.stretch_percent, overlay);
-    if (!s.stretch_place.empty()) ImGui::TextDisabled("  %s", s.stretch_place.c_str());
     if (!plots.frame_milliseconds.empty()) {
         std::snprintf(overlay, sizeof overlay, "%.2f ms a frame stepping + drawing",
                       plots.frame_milliseconds.latest());

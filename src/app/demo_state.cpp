@@ -215,14 +215,14 @@ std::optional<std::string> read_overrides(const std::vector<std::string>& overri
     return std::nullopt;
 }
 
-// An edit's refusal as the loader words a --set one: "error: --set KEY: why", naming every
-// key of the batch (the rules that join keys blame the batch).
-std::string override_refusal(const std::vector<std::string>& overrides,
-                             const std::string& problem) {
+// Where a refusal of a batch of --set style overrides says it came from, as the loader
+// words a --set one: "--set KEY", naming every key of the batch (the rules that join keys
+// blame the batch).
+std::string override_keys(const std::vector<std::string>& overrides) {
     std::string keys;
     for (const std::string& text : overrides)
         keys += (keys.empty() ? "" : ", ") + text.substr(0, text.find('='));
-    return "error: --set " + keys + ": " + problem;
+    return "--set " + keys;
 }
 
 }  // namespace
@@ -403,9 +403,15 @@ void DemoState::release_all_pins() {
 // ---- parameter changes ------------------------------------------------------------------------
 
 std::optional<std::string> DemoState::edit(const std::vector<SceneEdit>& edits) {
+    return edit(edits, "");
+}
+
+std::optional<std::string> DemoState::edit(const std::vector<SceneEdit>& edits,
+                                           const std::string& where) {
     if (replaying) return std::string("a session is replaying: stop it to change parameters");
     Scene checked = simulation.scene();
-    if (auto problem = apply_scene_edits(checked, edits)) return "error: " + *problem;
+    if (auto problem = apply_scene_edits(checked, edits))
+        return "error: " + (where.empty() ? "" : where + ": ") + *problem;
     if (edits.empty()) return std::nullopt;
     ClothEvent event;
     event.kind = ClothEvent::Kind::edit;
@@ -417,9 +423,7 @@ std::optional<std::string> DemoState::edit(const std::vector<SceneEdit>& edits) 
 std::optional<std::string> DemoState::change(const std::vector<std::string>& texts) {
     std::vector<SceneEdit> edits;
     if (auto error = read_overrides(texts, edits)) return error;
-    Scene checked = simulation.scene();
-    if (auto problem = apply_scene_edits(checked, edits)) return override_refusal(texts, *problem);
-    return edit(edits);
+    return edit(edits, override_keys(texts));
 }
 
 std::optional<std::string> DemoState::change_scene(const Scene& wanted) {

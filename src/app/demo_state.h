@@ -240,6 +240,8 @@ struct DemoState {
     void measure_frame(int steps);
 
   private:
+    // edit(), its refusal said as coming from `where` ("--set KEY"; "" names nothing).
+    std::optional<std::string> edit(const std::vector<SceneEdit>& edits, const std::string& where);
     void perform(const ClothEvent& event);  // record it, then apply it to every run
     void apply_to_all_runs(const ClothEvent& event);
     void replace_simulation(const Scene& new_scene);  // a new cloth for every run

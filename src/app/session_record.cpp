@@ -108,7 +108,9 @@ bool read_edits(Reader& reader, const toml::table& table, std::vector<SceneEdit>
         std::optional<SceneEdit> edit =
             read_scene_edit(edit_reader, key->as_string()->get(), *value);
         if (!edit) {
-            if (reader.error.empty()) reader.error = edit_reader.error()->message();
+            // "FILE:LINE:COL: what", as the reader's own errors read.
+            if (reader.error.empty())
+                reader.error = edit_reader.error()->where + ": " + edit_reader.error()->what;
             return false;
         }
         edits.push_back(std::move(*edit));

@@ -1,7 +1,7 @@
 // SceneEdit: one live change of a scene as a typed value — which parameter, and its new
 // value — instead of a whole scene written as TOML and parsed back. The panel makes these,
-// the demo applies them to every run shown, and a recording stores them (about 60 bytes a
-// slider tick where a whole scene took 2 KB).
+// the demo applies them to every run shown, and a recording stores them (about 100 bytes a
+// slider tick where a whole scene took 1 KB or more).
 //
 // An edit is checked by the scene rules the loader checks a file with (scene_rules.h), so a
 // refused edit changes nothing and says why in the loader's words. Edits that belong

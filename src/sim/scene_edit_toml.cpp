@@ -20,13 +20,6 @@ bool split_collider_index(const std::string& key, std::string& plain, std::uint3
     return true;
 }
 
-template <std::size_t N>
-bool read_choice_into(TomlReader& reader, const toml::table& holder, const std::string& parent,
-                      const std::string& leaf, const std::array<std::string_view, N>& names,
-                      int& index) {
-    return reader.read_choice(holder, parent, leaf, names, index);
-}
-
 }  // namespace
 
 namespace {
@@ -136,12 +129,12 @@ std::optional<SceneEdit> read_typed(TomlReader& reader, const std::string& key,
             int index = 0;
             const bool read =
                 edit.key == SceneKey::cloth_layout
-                    ? read_choice_into(reader, holder, parent, leaf, layout_names, index)
+                    ? reader.read_choice(holder, parent, leaf, layout_names, index)
                 : edit.key == SceneKey::cloth_orientation
-                    ? read_choice_into(reader, holder, parent, leaf, orientation_names, index)
+                    ? reader.read_choice(holder, parent, leaf, orientation_names, index)
                 : edit.key == SceneKey::integrator
-                    ? read_choice_into(reader, holder, parent, leaf, integrator_names, index)
-                    : read_choice_into(reader, holder, parent, leaf, contact_response_names, index);
+                    ? reader.read_choice(holder, parent, leaf, integrator_names, index)
+                    : reader.read_choice(holder, parent, leaf, contact_response_names, index);
             if (!read) return std::nullopt;
             if (edit.key == SceneKey::cloth_layout) edit.value = static_cast<Layout>(index);
             if (edit.key == SceneKey::cloth_orientation)
@@ -155,7 +148,7 @@ std::optional<SceneEdit> read_typed(TomlReader& reader, const std::string& key,
             GridPins pins;
             if (value.is_string()) {
                 int preset = 0;
-                if (!read_choice_into(reader, holder, parent, leaf, pin_preset_names, preset))
+                if (!reader.read_choice(holder, parent, leaf, pin_preset_names, preset))
                     return std::nullopt;
                 pins.preset = static_cast<PinPreset>(preset);
                 edit.value = pins;

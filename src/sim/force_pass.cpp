@@ -80,8 +80,6 @@ void accumulate_forces(const Cloth& cloth, const ForceField& field, std::span<co
     }
     if (!field.colliders.empty())
         accumulate_repulsion_forces(field.colliders, cloth, positions, velocities, forces);
-    if (field.drag && field.drag->active())
-        accumulate_drag_forces(*field.drag, cloth, positions, velocities, forces);
 }
 
 }  // namespace weft

@@ -7,16 +7,17 @@
 #include "parallel/worker_pool.h"
 #include "sim/cloth.h"
 #include "sim/colliders.h"
-#include "sim/drag.h"
 
 namespace weft {
 
 // The external force field, constant over a step.
 struct ForceField {
-    Vec3 gravity{0.0, -9.81, 0.0};        // m/s²
-    double air_drag = 0.0;                // N·s/m per particle: f = -air_drag (v - wind)
-    Vec3 wind{0.0};                       // m/s
-    const DragHandle* drag = nullptr;     // the user's pull, while there is one
+    Vec3 gravity{0.0, -9.81, 0.0};  // m/s²
+    double air_drag = 0.0;          // N·s/m per particle: f = -air_drag (v - wind)
+    Vec3 wind{0.0};                 // m/s
+    // The particles the hand holds this step (drag.h), ascending: their velocities are
+    // prescribed. Only the implicit solves read it; other steps are corrected after.
+    std::span<const std::uint32_t> held;
     std::span<const Collider> colliders;  // those with repulsion contacts, if any
     // Every collider, for the structured implicit step, which holds particles on the impulse
     // ones inside its solve (integrators/implicit_contacts.h); the other steps leave those to
@@ -29,7 +30,6 @@ struct ForceField {
 //
 //   gravity  m g
 //   drag     -air_drag (v - wind)
-//   drag     the user's pull (drag.h), only while dragging
 //   contact  repulsion from colliders (colliders.h), only if the scene has such colliders
 //   springs  for spring (i, j) with rest length L, d = x_j - x_i, u = d / |d|:
 //            f_i = (k (|d| - L) + c ((v_j - v_i) · u)) u,   f_j = -f_i

@@ -6,7 +6,6 @@
 #include <mutex>
 #include <vector>
 
-#include "sim/drag.h"
 #include "sim/force_pass.h"
 #include "sim/grid_force_kernel.h"
 
@@ -143,8 +142,7 @@ bool step_grid_symplectic_euler(Cloth& cloth, const ForceField& field, double dt
                                 std::vector<Vec3>& next_velocities, const SweepRequest* sweep,
                                 ParticleSweep* sweep_result, WorkerPool* pool,
                                 const RowsSteppedWork* after_rows) {
-    if (!fused_grid_steps() || (field.drag && field.drag->active()) || !field.colliders.empty())
-        return false;
+    if (!fused_grid_steps() || !field.colliders.empty()) return false;
     grid_kernel::Job job;
     if (!grid_stencil_usable(cloth) || !describe_stencil(cloth, cloth.positions, job)) return false;
     const std::size_t count = cloth.particle_count();

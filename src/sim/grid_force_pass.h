@@ -35,8 +35,8 @@ Function* kernel_of(Function* baseline, Function* avx2, Function* avx512) {
 }
 
 // Gravity, air drag and every spring force into `forces` (overwritten), or false — touching
-// nothing — when the cloth has no usable grid stencil. The drag handle and repulsion
-// contacts are the caller's (accumulate_forces adds them after).
+// nothing — when the cloth has no usable grid stencil. Repulsion contacts are the caller's
+// (accumulate_forces adds them after).
 bool accumulate_grid_forces(const Cloth& cloth, const ForceField& field,
                             std::span<const Vec3> positions, std::span<const Vec3> velocities,
                             std::span<Vec3> forces, WorkerPool* pool);
@@ -62,7 +62,7 @@ struct SweepRequest {
 //
 // With `sweep`, the guard's sweep of the new state is done in the same pass, into
 // `sweep_result`. Returns false, touching nothing, when the pass cannot take the step: no
-// usable grid stencil, or a force the pass does not compute (the drag handle, repulsion).
+// usable grid stencil, or a force the pass does not compute (repulsion).
 //
 // With `after_rows`, each thread then goes on with that work on the particles of the rows
 // it has just stepped, while they are in its cache: run(context, begin, end) over particles

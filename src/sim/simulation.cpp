@@ -87,10 +87,40 @@ void Simulation::reset() {
 }
 
 StepReport Simulation::step() {
+    // The grip (drag.h). An explicit step cannot answer the hand within itself: its grip is
+    // judged before the step, where the hand's move would leave the springs at the hand.
+    // Implicit Euler's solve answers the hand, so its grip is judged after the solve: where
+    // it slipped, the step is taken again from the same state without the hand.
+    if (!drag_.active()) return take_step(false);
+    find_grip_springs(drag_, cloth_);
+    prescribe_hand_motion(drag_, cloth_, dt_);
+    if (integrator_ != Integrator::implicit_euler) {
+        if (coming_grip_stretch(drag_, cloth_, dt_) <= drag_.grip_stretch) return take_step(false);
+        end_drag();
+        StepReport report = take_step(false);
+        report.hand_slipped = true;
+        return report;
+    }
+    grip_start_positions_ = cloth_.positions;  // no allocation after the first held step
+    grip_start_velocities_ = cloth_.velocities;
+    StepReport report = take_step(true);
+    if (!report.hand_slipped) return report;
+    cloth_.positions = grip_start_positions_;
+    cloth_.velocities = grip_start_velocities_;
+    end_drag();
+    report = take_step(false);
+    report.hand_slipped = true;
+    return report;
+}
+
+StepReport Simulation::take_step(bool judge_grip) {
     StepReport report;
-    // The field points at the drag only for the step, so a copied Simulation never holds a
+    // The hand's particles get the velocity that takes them where the hand goes (drag.h).
+    // The field points at them only for the step, so a copied Simulation never holds a
     // pointer into another one.
-    field_.drag = drag_.active() ? &drag_ : nullptr;
+    const bool held = drag_.active();
+    if (held) start_hand_motion(drag_, cloth_, dt_);
+    field_.held = drag_.particles;
     field_.colliders =
         has_repulsion_ ? std::span<const Collider>(colliders_) : std::span<const Collider>();
     field_.solids = colliders_;
@@ -128,7 +158,7 @@ StepReport Simulation::step() {
         }
         step_function_(cloth_, field_, dt_, workspace_);
     }
-    field_.drag = nullptr;
+    field_.held = {};
     field_.colliders = {};
     field_.solids = {};
     // Corrections of positions and velocities after the step; any of them makes the history
@@ -162,6 +192,19 @@ StepReport Simulation::step() {
             self_collision_->resolve(cloth_, colliders_, pool_.get(), step_start, watching,
                                      corrected_on_rows ? &measured : nullptr);
     corrections += report.contacts;
+    // Whatever the step and the corrections did to the held particles, they end it where the
+    // hand put them. Not a correction for the Verlets' history: their previous positions are
+    // where the hand had them, which is how the hand moved them.
+    if (held) {
+        hold_in_hand(drag_, cloth_);
+        if (judge_grip && largest_grip_stretch(drag_, cloth_) > drag_.grip_stretch) {
+            report.hand_slipped = true;  // step() takes it again without the hand
+            return report;
+        }
+        if (watching)
+            for (const std::uint32_t p : drag_.particles)
+                watching->check(p, cloth_.positions[p], cloth_.velocities[p]);
+    }
     time_ += dt_;
     ++steps_taken_;
     if (scene_.tear_max_stretch) {
@@ -177,7 +220,7 @@ StepReport Simulation::step() {
     std::optional<ParticleSweep> swept;
     if (watching)
         swept = watching->result();
-    else if (corrections == 0)
+    else if (corrections == 0 && !held)
         swept = workspace_.sweep_result;
     report.divergence = divergence_guard_.check(cloth_, check_runaway_stretch, pool_.get(), swept);
     // With tearing on, an unstable step shreds the cloth rather than diverge (runaway_tearing.h).
@@ -340,22 +383,21 @@ void Simulation::set_parameters(const Scene& wanted) {
 
 void Simulation::start_drag(DragHandle drag) {
     drag_ = std::move(drag);
-    // The structured implicit step takes the hand's spring into its system, so it holds at
-    // any dt; every other step takes it explicitly and needs h ω <= 0.5 (drag.h).
-    const bool implicit_hand = integrator_ == Integrator::implicit_euler &&
-                               structured_implicit_solve() && grid_stencil_usable(cloth_);
-    if (!implicit_hand) drag_.angular_frequency = std::min(drag_.angular_frequency, 0.5 / dt_);
+    drag_.last_pull_time = time_;
+    // The held particles' velocities change at once: carried history no longer fits them.
     workspace_.history_valid = false;
 }
 
 void Simulation::move_drag_target(const Vec3& target) {
-    drag_.target = target;
-    workspace_.history_valid = false;
+    if (drag_.active()) move_hand(drag_, target, time_, dt_);
 }
 
 void Simulation::end_drag() {
     drag_ = DragHandle{};
     workspace_.history_valid = false;
+    // The energy guard measures from where the hand lets go: what the hand put in since its
+    // last check is the cloth's now (energy_guard.h).
+    energy_guard_.forget();
 }
 
 void Simulation::set_pinned(std::size_t particle, bool pinned) {

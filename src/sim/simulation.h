@@ -25,6 +25,7 @@ struct StepReport {
     std::size_t springs_torn = 0;           // springs that broke in this step
     std::size_t contacts = 0;               // impulse contacts and self-collision pairs resolved
     std::optional<std::string> divergence;  // why the state is no longer sound, if it is not
+    bool hand_slipped = false;              // the cloth pulled out of the hand (drag.h)
     bool diverged() const { return divergence.has_value(); }
 };
 
@@ -110,7 +111,8 @@ class Simulation {
     // Back to the scene's initial state (with the parameters as they are now).
     void reset();
 
-    // The user's hand: grab the cloth where a ray hits it, pull, let go.
+    // The user's hand: grab the cloth where a ray hits it, pull, let go (drag.h). The hand
+    // lets go by itself when the cloth slips from it (StepReport::hand_slipped).
     void start_drag(DragHandle drag);
     void move_drag_target(const Vec3& target);
     void end_drag();
@@ -132,6 +134,9 @@ class Simulation {
 
   private:
     void build_colliders();  // colliders_ and has_repulsion_ from scene_.colliders
+    // One step with the hand's motion as prescribed; with `judge_grip`, stops right after the
+    // integrator and its corrections, reporting hand_slipped, if the grip slipped.
+    StepReport take_step(bool judge_grip);
 
     Scene scene_;
     Cloth cloth_;
@@ -146,7 +151,9 @@ class Simulation {
     std::vector<SpringGroup> switched_off_;  // families switched off, kept with their tears
     bool has_repulsion_ = false;             // any collider with the repulsion response
     std::optional<SelfCollision> self_collision_;
-    std::vector<Vec3> step_start_;  // m: positions before the step, for self-collision
+    std::vector<Vec3> step_start_;             // m: positions before the step, for self-collision
+    std::vector<Vec3> grip_start_positions_;   // m, the state before a held implicit step,
+    std::vector<Vec3> grip_start_velocities_;  // m/s, for taking it again if the grip slips
     DivergenceGuard divergence_guard_;
     EnergyGuard energy_guard_;
     RunawayTearingGuard tearing_guard_;

@@ -162,22 +162,16 @@ TEST(FusedGridStep, ItsSweepFlagsEveryParticleThatMovedTheLimitAndNoneUnderAThir
     set_simd_level(before);
 }
 
-// The drag handle and repulsion contacts are forces the pass does not compute: it declines
-// the step and leaves the state alone.
+// Repulsion contacts are forces the pass does not compute: it declines the step and leaves
+// the state alone.
 TEST(FusedGridStep, DeclinesWhenTheFieldHasForcesThePassDoesNotCompute) {
     Cloth cloth = loaded_sheet();
     const Cloth start = cloth;
     std::vector<Vec3> next_positions, next_velocities;
-    DragHandle drag = grab_cloth(cloth, {0, 100, 1.0, cloth.positions[100]}, 0.1);
-    ASSERT_TRUE(drag.active());
-    ForceField field = windy_field();
-    field.drag = &drag;
-    EXPECT_FALSE(step_grid_symplectic_euler(cloth, field, step_dt, next_positions, next_velocities,
-                                            nullptr, nullptr, nullptr));
     Collider sphere;
     sphere.radius = 0.2;
     sphere.response = ContactResponse::repulsion;
-    field = windy_field();
+    ForceField field = windy_field();
     field.colliders = {&sphere, 1};
     EXPECT_FALSE(step_grid_symplectic_euler(cloth, field, step_dt, next_positions, next_velocities,
                                             nullptr, nullptr, nullptr));

@@ -88,8 +88,9 @@ std::uint64_t implicit_sheet_hash(int threads) {
             drag.particles = {40 * 72 + 36, 40 * 72 + 37};
             drag.weights = {1.0, 0.5};
             drag.offsets = {Vec3(0.0), Vec3(0.0)};
-            drag.target = simulation.cloth().positions[40 * 72 + 36] + Vec3(0.0, 1.0, 0.5);
+            drag.hand = drag.target = simulation.cloth().positions[40 * 72 + 36];
             simulation.start_drag(drag);
+            simulation.move_drag_target(drag.hand + Vec3(0.0, 1.0, 0.5));
         }
         if (simulation.step().diverged()) return 0;
     }
@@ -161,10 +162,10 @@ TEST(ImplicitGridSolve, AHangingChainComesToRestAtItsExactStaticExtension) {
 
 TEST(ImplicitGridSolve, AHardDragAgainstThePinsNeitherDivergesNorStretchesWithoutBound) {
     // The hand grabs a patch (the demo's 8 cm radius) beside the pinned edge of a 48² sheet
-    // and pulls it 3 m away and round about, at one step per frame, with the hand's full
-    // stiffness (ω = 300 rad/s, h ω = 5: an explicit hand blows up at this step). The goal
-    // moves at most max_speed × h per step, so no spring can be stretched further in one
-    // step than that reach across a few spacings of falloff.
+    // and takes it 3 m away and round about at 6 m/s, at one step per frame: far beyond the
+    // sheet's reach. The held particles' velocities are prescribed in the solve, so the sheet
+    // answers the hand within each step; the grip slips before the springs at the hand pass
+    // grip_stretch by much, and nothing runs away.
     Scene scene = cloth_material_sheet(48, 1.0 / 60.0);
     Simulation simulation(scene);
     const std::uint32_t grabbed = 3 * 48 + 3;
@@ -172,19 +173,25 @@ TEST(ImplicitGridSolve, AHardDragAgainstThePinsNeitherDivergesNorStretchesWithou
     hit.particle = grabbed;
     hit.point = simulation.cloth().positions[grabbed];
     simulation.start_drag(grab_cloth(simulation.cloth(), hit, 0.08));
-    EXPECT_EQ(simulation.drag().angular_frequency, 300.0);  // not lowered for this step
-    ASSERT_GT(simulation.drag().particles.size(), 10u);
+    ASSERT_GT(simulation.drag().particles.size(), 5u);
     double largest_stretch = 0.0;
+    bool slipped = false;
+    Vec3 hand = hit.point;
     for (int s = 0; s < 300; ++s) {
         const double angle = 0.05 * s;
-        simulation.move_drag_target(simulation.cloth().positions[0] +
-                                    Vec3(3.0 * std::cos(angle), -3.0 + std::sin(angle), 3.0));
+        const Vec3 goal = simulation.cloth().positions[0] +
+                          Vec3(3.0 * std::cos(angle), -3.0 + std::sin(angle), 3.0);
+        const Vec3 ahead = goal - hand;
+        hand += std::min(1.0, 0.1 / glm::length(ahead)) * ahead;
+        simulation.move_drag_target(hand);
         const StepReport report = simulation.step();
         ASSERT_FALSE(report.diverged()) << "step " << s << ": " << report.divergence.value_or("");
+        slipped = slipped || report.hand_slipped;
         largest_stretch = std::max(largest_stretch, largest_stretch_ratio(simulation.cloth()));
     }
-    EXPECT_LT(largest_stretch, 2.0);  // measured 1.42
-    EXPECT_GT(largest_stretch, 1.1);  // it really pulled
+    EXPECT_TRUE(slipped);
+    EXPECT_LT(largest_stretch, 3.0);
+    EXPECT_GT(largest_stretch, 1.5);  // it really pulled
 }
 
 // The largest stretch over `steps` steps, leaving out the first 0.1 s: releasing a sheet held

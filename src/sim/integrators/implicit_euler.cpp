@@ -10,7 +10,8 @@
 // with ∂f_i/∂x_i, ∂f_i/∂v_i their negatives; air drag adds -air_drag I to ∂f/∂v. The
 // transverse term (1 - L/l) is clamped at 0 for compressed springs: negative, it makes the
 // system indefinite and conjugate gradient unreliable (Choi & Ko 2002 discuss the buckling
-// behind it). The drag handle and repulsion contacts are taken explicitly, in f0.
+// behind it). Repulsion contacts are taken explicitly, in f0. The hand's particles
+// (drag.h) are constrained: their velocities are prescribed, filtered like pins.
 //
 // The system matrix A = M + h C + h² K is symmetric positive definite; it is never
 // assembled. Conjugate gradient multiplies by it spring by spring, with pinned particles
@@ -37,7 +38,8 @@ double inner(std::span<const Vec3> a, std::span<const Vec3> b) {
 }  // namespace
 
 void multiply_implicit_system(const Cloth& cloth, const IntegratorWorkspace& work, double air_drag,
-                              double dt, std::span<const Vec3> vector, std::span<Vec3> product) {
+                              double dt, std::span<const Vec3> vector, std::span<Vec3> product,
+                              std::span<const std::uint32_t> held) {
     const std::size_t count = cloth.particle_count();
     for (std::size_t p = 0; p < count; ++p)
         product[p] = (cloth.topology().masses[p] + dt * air_drag) * vector[p];
@@ -55,6 +57,7 @@ void multiply_implicit_system(const Cloth& cloth, const IntegratorWorkspace& wor
         }
     }
     for (std::uint32_t p : cloth.topology().pinned) product[p] = Vec3(0.0);
+    for (std::uint32_t p : held) product[p] = Vec3(0.0);
 }
 
 namespace {
@@ -210,19 +213,23 @@ void take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
         }
     }
     for (std::uint32_t p : cloth.topology().pinned) b[p] = Vec3(0.0);
+    // The hand's particles keep the velocity it prescribes (Δv = 0): filtered like pins, while
+    // b above already holds -h² K v0 of their motion for their neighbours.
+    for (std::uint32_t p : field.held) b[p] = Vec3(0.0);
 
     // Conjugate gradient from the warm start.
     std::span<Vec3> x = work.implicit_delta_v, r = work.implicit_residual,
                     d = work.implicit_direction, q = work.implicit_product;
     for (std::uint32_t p : cloth.topology().pinned) x[p] = Vec3(0.0);
-    multiply_implicit_system(cloth, work, field.air_drag, dt, x, q);
+    for (std::uint32_t p : field.held) x[p] = Vec3(0.0);
+    multiply_implicit_system(cloth, work, field.air_drag, dt, x, q, field.held);
     for (std::size_t p = 0; p < count; ++p) r[p] = b[p] - q[p], d[p] = r[p];
     const double b_norm = std::sqrt(inner(b, b));
     const double target = implicit_cg_tolerance * b_norm;
     double r_squared = inner(r, r);
     int iteration = 0;
     while (std::sqrt(r_squared) > target && iteration < implicit_cg_max_iterations) {
-        multiply_implicit_system(cloth, work, field.air_drag, dt, d, q);
+        multiply_implicit_system(cloth, work, field.air_drag, dt, d, q, field.held);
         const double curvature = inner(d, q);
         if (!(curvature > 0.0)) break;  // not positive definite (or NaN): stop, the guard will see
         const double alpha = r_squared / curvature;

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
-#include "sim/drag.h"
 #include "sim/force_pass.h"
 #include "sim/grid_force_pass.h"
 
@@ -143,9 +142,7 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     implicit_kernel::Job& job = solver.job;
     // f(x0, v = 0): gravity, the wind's push and the elastic springs; the dampers are
     // linear in v and live in the matrix (see implicit_grid_kernel.inl).
-    ForceField static_field = field;
-    static_field.drag = nullptr;
-    if (!accumulate_grid_forces(cloth, static_field, cloth.positions, solver.zero_velocities,
+    if (!accumulate_grid_forces(cloth, field, cloth.positions, solver.zero_velocities,
                                 solver.static_forces, pool))
         return false;
     job.dt = dt;
@@ -172,46 +169,27 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     job.masses = cloth.topology().masses.data();
     job.inverse_masses = cloth.topology().inverse_masses.data();
 
-    // The drag handle, f = w m (ω² (goal - x) - ω v), with the goal brought within
-    // max_speed × h of the particle (drag.h): its spring to the goal goes into b, its
-    // stiffness and damping into the diagonal (below), so the hand is as implicit as the
-    // cloth and its pull per step is bounded.
-    const DragHandle* drag = field.drag && field.drag->active() ? field.drag : nullptr;
-    auto hand_reach = [&](std::size_t k) {
-        const std::uint32_t p = drag->particles[k];
-        const Vec3 reach = drag->target + drag->offsets[k] - cloth.positions[p];
-        const double distance = glm::length(reach);
-        const double longest = drag->max_speed * dt;
-        return distance > longest ? (longest / distance) * reach : reach;
-    };
-    if (drag) {
-        const double omega = drag->angular_frequency;
-        for (std::size_t k = 0; k < drag->particles.size(); ++k) {
-            const std::uint32_t p = drag->particles[k];
-            solver.static_forces[p] +=
-                (drag->weights[k] * cloth.topology().masses[p] * omega * omega) * hand_reach(k);
-        }
-    }
-
     const double warm_start = settings.warm_start && solver.has_previous_change ? 1.0 : 0.0;
     const auto setup =
         kernel_of(implicit_kernel::setup_rows_baseline, implicit_kernel::setup_rows_avx2,
                   implicit_kernel::setup_rows_avx512);
     over_rows(solver, pool, [&](int begin, int end) { setup(job, begin, end, warm_start); });
-    if (drag) {
-        const double omega = drag->angular_frequency;
-        for (std::size_t k = 0; k < drag->particles.size(); ++k) {
-            const std::uint32_t p = drag->particles[k];
-            const double share = drag->weights[k] * cloth.topology().masses[p];
-            job.mass_diagonal[solver.pad + p] +=
-                static_cast<float>(dt * share * omega + dt * dt * share * omega * omega);
-        }
-    }
-
     // Particles held on the solids' surfaces (implicit_contacts.h): before the residual
     // pass, whose preconditioner is filtered for them.
     if (!field.solids.empty() || !solver.contacts.held.empty())
         solver.contacts.hold(cloth, field.solids, field.gravity, dt, job);
+    // Particles in the hand (drag.h): constrained, with their velocities prescribed (Baraff &
+    // Witkin's z). Filtered out like pins, but their velocity stays in the vector the solve
+    // multiplies, so every free neighbour's row sees where the hand takes them.
+    for (const std::uint32_t p : field.held) {
+        const std::size_t i = solver.pad + p;
+        const Vec3& v = cloth.velocities[p];
+        job.free[i] = 0.0f;
+        job.rhs.x[i] = job.rhs.y[i] = job.rhs.z[i] = 0.0f;
+        job.start.x[i] = job.solution.x[i] = static_cast<float>(v.x);
+        job.start.y[i] = job.solution.y[i] = static_cast<float>(v.y);
+        job.start.z[i] = job.solution.z[i] = static_cast<float>(v.z);
+    }
 
     const int rows = solver.rows;
     double* sums = solver.row_sums.data();
@@ -301,7 +279,8 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     solver.last_iterations = iteration;
     solver.last_relative_residual = scale > 0.0 ? std::sqrt(r_r) / scale : 0.0;
 
-    // v1 = the solution, x1 = x0 + h v1; pinned particles stay where they are.
+    // v1 = the solution, x1 = x0 + h v1; pinned particles stay where they are, held ones go
+    // where the hand takes them.
     over_rows(solver, pool, [&](int begin, int end) {
         for (int row = begin; row < end; ++row) {
             for (int c = 0; c < solver.cols; ++c) {
@@ -310,7 +289,7 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
                 const bool is_free = job.free[i] != 0.0f;
                 const Vec3 v1 = is_free
                                     ? Vec3(job.solution.x[i], job.solution.y[i], job.solution.z[i])
-                                    : Vec3(0.0);
+                                    : Vec3(job.start.x[i], job.start.y[i], job.start.z[i]);
                 cloth.velocities[p] = v1;
                 cloth.positions[p] += dt * v1;
                 job.guess_change.x[i] = job.solution.x[i] - job.start.x[i];

@@ -110,9 +110,11 @@ void step_rk4(Cloth& cloth, const ForceField& field, double dt, IntegratorWorksp
 void step_implicit_euler(Cloth& cloth, const ForceField& field, double dt,
                          IntegratorWorkspace& work);
 
-// y = (M + h C + h² K) v for the terms of the last implicit step, pinned entries zero.
+// y = (M + h C + h² K) v for the terms of the last implicit step, the entries of pinned
+// particles and of those in `held` (the hand's) zero.
 void multiply_implicit_system(const Cloth& cloth, const IntegratorWorkspace& work, double air_drag,
-                              double dt, std::span<const Vec3> vector, std::span<Vec3> product);
+                              double dt, std::span<const Vec3> vector, std::span<Vec3> product,
+                              std::span<const std::uint32_t> held = {});
 
 // The step function of a method.
 StepFunction step_function(Integrator integrator);

@@ -83,8 +83,10 @@ void prescribe_hand_motion(DragHandle& drag, const Cloth& cloth, double dt) {
 }
 
 void start_hand_motion(const DragHandle& drag, Cloth& cloth, double dt) {
+    // A particle pinned while in the hand stays where the pin holds it, at rest.
     for (std::size_t k = 0; k < drag.particles.size(); ++k)
-        cloth.velocities[drag.particles[k]] = drag.velocities[k];
+        if (!cloth.is_pinned(drag.particles[k]))
+            cloth.velocities[drag.particles[k]] = drag.velocities[k];
     // The fraction of the gap a follower closes in a step: (1 - w) left after each 1/60 s.
     constexpr double frame = 1.0 / 60.0;  // s
     for (std::size_t k = 0; k < drag.followers.size(); ++k) {
@@ -97,6 +99,7 @@ void start_hand_motion(const DragHandle& drag, Cloth& cloth, double dt) {
 void hold_in_hand(const DragHandle& drag, Cloth& cloth) {
     for (std::size_t k = 0; k < drag.particles.size(); ++k) {
         const std::uint32_t p = drag.particles[k];
+        if (cloth.is_pinned(p)) continue;
         cloth.positions[p] = drag.goals[k];
         cloth.velocities[p] = drag.velocities[k];
     }

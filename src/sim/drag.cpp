@@ -49,8 +49,6 @@ DragHandle grab_cloth(const Cloth& cloth, const RayHit& hit, double radius) {
         drag.weights.push_back(weight);
         drag.offsets.push_back(offset);
     }
-    drag.goals.resize(drag.particles.size());
-    drag.velocities.resize(drag.particles.size());
     find_grip_springs(drag, cloth);
     return drag;
 }
@@ -73,7 +71,7 @@ void prescribe_hand_motion(DragHandle& drag, const Cloth& cloth, double dt) {
     const Vec3 hand = distance <= reach ? drag.target : drag.hand + (reach / distance) * ahead;
     drag.hand_velocity = (hand - drag.hand) / dt;
     drag.hand = hand;
-    drag.goals.resize(drag.particles.size());  // no-ops after the grab
+    drag.goals.resize(drag.particles.size());  // no-ops after the first step
     drag.velocities.resize(drag.particles.size());
     for (std::size_t k = 0; k < drag.particles.size(); ++k) {
         const Vec3 x = cloth.positions[drag.particles[k]];

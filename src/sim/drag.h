@@ -12,9 +12,9 @@
 // - The hand holds a patch: the particles within the radius whose falloff weight w is at
 //   least 1/2 (and the grabbed one), carried as they were when grabbed, like fingers pinching
 //   the fabric. The rest of the radius follows with its weight: each frame (1/60 s) closes
-//   the fraction w of the gap between its velocity and the hand's. Weighted positions for
-//   the held ones were tried first: a particle of weight 0.1 closing 10 % of its way a step
-//   trails a 5 m/s hand by 0.6 m at one step a frame, and tore the patch apart.
+//   the fraction w of the gap between its velocity and the hand's. Not weighted positions:
+//   a light-weighted particle closing a small share of its way each step trails a fast hand
+//   by many spacings at one step a frame, and tears the patch apart.
 // - The grip slips. A spring from a held particle to the free cloth stretched past
 //   grip_stretch rest lengths pulls on the hand with k (grip_stretch - 1) L: the most any
 //   spring at the hand can, the grip force. Past it the cloth slips from the hand, which

@@ -12,11 +12,11 @@ out=${1:-docs/images}
 weft=${WEFT:-build/release/src/app/weft}
 scenes=assets/scenes
 mkdir -p "$out"
-"$weft" --headless "$scenes/hanging_sheet.toml" --steps 500 --size 1280x720 \
-  --screenshot "$out/hanging-sheet-500-steps.png"
-"$weft" --headless "$scenes/hanging_sheet.toml" --steps 500 --size 1280x720 \
+"$weft" --headless "$scenes/hanging_sheet.toml" --steps 2000 --size 1280x720 \
+  --screenshot "$out/hanging-sheet-half-second.png"
+"$weft" --headless "$scenes/hanging_sheet.toml" --steps 2000 --size 1280x720 \
   --set camera.position=[1.9,0.2,-1.2] --set camera.target=[0,-0.1,-0.1] \
-  --screenshot "$out/hanging-sheet-500-steps-back.png"
+  --screenshot "$out/hanging-sheet-half-second-back.png"
 for scene in sheet_on_sphere tablecloth drape_self_collision self_fold round_tablecloth flag_with_hole \
   skirt; do
   "$weft" --headless "$scenes/$scene.toml" --steps 8000 --size 960x540 \

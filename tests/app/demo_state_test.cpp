@@ -128,7 +128,7 @@ TEST(DemoState, ApplyingTheRunningParametersChangesNothingBitForBit) {
     untouched.step(100);
     ASSERT_EQ(hash_state(edited.simulation.cloth()), hash_state(untouched.simulation.cloth()));
     ASSERT_FALSE(edited.change({}));
-    ASSERT_FALSE(edited.change({"solver.dt=0.001"}));  // the value it already has
+    ASSERT_FALSE(edited.change({"solver.dt=0.00025"}));  // the value it already has
     edited.step(1);
     untouched.step(1);
     ASSERT_EQ(hash_state(edited.simulation.cloth()), hash_state(untouched.simulation.cloth()));
@@ -441,10 +441,10 @@ TEST(DemoState, MassByOrdersOfMagnitudeMidRunStaysFiniteOrRecovers) {
 
 // ---- recovery that heals (issue 17) -------------------------------------------------------------
 
-// Light particles (k/m 33× the scene's: a step limit near 0.35 ms) make the scene's 1 ms
+// Light particles (k/m 33× the scene's: a step limit near 0.09 ms) make the scene's 0.25 ms
 // diverge within a few steps; steps until the main run and its copy have both rolled back.
 void diverge_once(DemoState& state) {
-    ASSERT_FALSE(state.change({"cloth.particle_mass=0.0003"}));
+    ASSERT_FALSE(state.change({"cloth.particle_mass=0.000015"}));
     for (int frame = 0; frame < 100; ++frame) {
         state.step(16);
         if (state.recovery.recoveries > 0 && state.companions[0].recovery.recoveries > 0) break;
@@ -454,36 +454,36 @@ void diverge_once(DemoState& state) {
 }
 
 TEST(DemoState, AfterARollbackDtGrowsBackToTheChosenOneOnceStepsAreSound) {
-    DemoState state = demo();  // 1 ms, the scene's
-    state.add_companion(Integrator::velocity_verlet, 0.0008);
+    DemoState state = demo();  // 0.25 ms, the scene's
+    state.add_companion(Integrator::velocity_verlet, 0.0002);
     diverge_once(state);
-    // The particles' mass back as the scene has it: 1 ms holds again (the limit is ~2 ms).
+    // The particles' mass back as the scene has it: 0.25 ms holds again.
     // The edit does not name dt, so the halved dt it carries is not a new choice.
-    ASSERT_FALSE(state.change({"cloth.particle_mass=0.01"}));
+    ASSERT_FALSE(state.change({"cloth.particle_mass=0.0005"}));
     const Simulation& copy = state.companions[0].simulation;
-    ASSERT_LT(state.simulation.dt(), 0.001);
-    ASSERT_LT(copy.dt(), 0.0008);
+    ASSERT_LT(state.simulation.dt(), 0.00025);
+    ASSERT_LT(copy.dt(), 0.0002);
     const int recoveries = state.recovery.recoveries;
-    // Sound for half a second at each dt, then doubled: at most three doublings (1 ms down
+    // Sound for half a second at each dt, then doubled: at most three doublings (0.25 ms down
     // to an eighth) and 1.5 s; 3 s of simulated time is ample.
     const double healed_by = state.simulation.time() + 3.0;
     bool said_restored = false;
     while (state.simulation.time() < healed_by) {
         ASSERT_EQ(state.step(16), 16) << state.message;
-        said_restored |= state.message.find("dt restored to 1 ms") != std::string::npos;
+        said_restored |= state.message.find("dt restored to 0.25 ms") != std::string::npos;
     }
     EXPECT_EQ(state.recovery.recoveries, recoveries);
-    EXPECT_EQ(state.simulation.dt(), 0.001);  // exactly: doubling undoes halving
-    EXPECT_EQ(copy.dt(), 0.0008);
+    EXPECT_EQ(state.simulation.dt(), 0.00025);  // exactly: doubling undoes halving
+    EXPECT_EQ(copy.dt(), 0.0002);
     EXPECT_TRUE(said_restored);
-    EXPECT_EQ(state.simulation.scene().solver.dt, 0.001);  // what a saved scene would say
+    EXPECT_EQ(state.simulation.scene().solver.dt, 0.00025);  // what a saved scene would say
 }
 
 TEST(DemoState, DtDoesNotGrowBeforeHalfASecondOfSoundSteps) {
     DemoState state = demo();
-    state.add_companion(Integrator::symplectic_euler, 0.001);
+    state.add_companion(Integrator::symplectic_euler, 0.00025);
     diverge_once(state);
-    ASSERT_FALSE(state.change({"cloth.particle_mass=0.01"}));
+    ASSERT_FALSE(state.change({"cloth.particle_mass=0.0005"}));
     const double halved = state.simulation.dt();
     const double rolled_back_to = state.simulation.time() - state.recovery.sound_seconds;
     while (state.simulation.time() < rolled_back_to + 0.45) state.step(1);
@@ -513,10 +513,10 @@ TEST(DemoState, ResetRestoresTheChosenDtAndClearsTheRecoveries) {
 
 TEST(DemoState, ParametersThatCannotHoldTheChosenDtAreRetriedEverMoreRarely) {
     DemoState state = demo();
-    // Unstable at 1 ms for good: every return to it diverges. Each failed return doubles the
+    // Unstable at 0.25 ms for good: every return to it diverges. Each failed return doubles the
     // wait before the next (0.5, 1, 2, 4 s), so 8 s of simulated time see at most 5 rollbacks
     // past the first few halvings, where a fixed half-second wait would see one a second.
-    ASSERT_FALSE(state.change({"cloth.particle_mass=0.0003"}));
+    ASSERT_FALSE(state.change({"cloth.particle_mass=0.000015"}));
     while (state.simulation.time() < 1.0) state.step(16);
     const int settled = state.recovery.recoveries;
     const double from = state.simulation.time();
@@ -534,7 +534,7 @@ bool ascii_only(const std::string& text) {
 
 TEST(DemoState, ADivergenceIsSaidAsAProblemInTextTheWindowsFontDraws) {
     DemoState state = demo();
-    ASSERT_FALSE(state.change({"cloth.particle_mass=0.0003"}));  // 1 ms is past its limit
+    ASSERT_FALSE(state.change({"cloth.particle_mass=0.000015"}));  // 0.25 ms is past its limit
     for (int frame = 0; frame < 100 && state.recovery.recoveries == 0; ++frame) state.step(16);
     ASSERT_GE(state.recovery.recoveries, 1);
     EXPECT_NE(state.message.find("rolled back"), std::string::npos) << state.message;
@@ -543,9 +543,9 @@ TEST(DemoState, ADivergenceIsSaidAsAProblemInTextTheWindowsFontDraws) {
     EXPECT_TRUE(ascii_only(state.message)) << state.message;
 
     // Healing is news, not a problem.
-    ASSERT_FALSE(state.change({"cloth.particle_mass=0.01"}));
+    ASSERT_FALSE(state.change({"cloth.particle_mass=0.0005"}));
     bool restored = false;
-    for (int frame = 0; frame < 200 && !restored; ++frame) {
+    for (int frame = 0; frame < 800 && !restored; ++frame) {
         state.step(16);
         restored = state.message.find("dt restored") != std::string::npos;
     }

@@ -21,7 +21,7 @@ std::uint64_t final_hash(Integrator integrator, int threads = 1) {
                                              {"forces.wind=[4,0,6]"});
     EXPECT_TRUE(loaded.ok());
     Scene scene = *loaded.scene;
-    scene.solver = {integrator, 5e-4};
+    scene.solver = {integrator, 2.5e-4};
     Simulation simulation(scene);
     simulation.set_thread_count(threads);
     const std::uint32_t corner =
@@ -31,7 +31,7 @@ std::uint64_t final_hash(Integrator integrator, int threads = 1) {
     std::size_t torn = 0;
     for (int frame = 0; frame < 120; ++frame) {
         simulation.move_drag_target(start + Vec3(0.02 * frame, -0.03 * frame, 0.01 * frame));
-        for (int s = 0; s < 33; ++s) {
+        for (int s = 0; s < 66; ++s) {
             const StepReport report = simulation.step();
             torn += report.springs_torn;
             if (report.diverged()) return 0;

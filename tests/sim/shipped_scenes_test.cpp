@@ -35,7 +35,9 @@ std::vector<fs::path> shipped_scenes() {
 // lists each scene's stretch at rest); cloth_256 is cloth_128's material at twice the
 // resolution, left out for its cost.
 TEST(ShippedScenes, TheClothScenesStretchAtMostFivePercentAtRest) {
-    for (const char* file : {"cloth_128.toml", "skirt.toml", "slope.toml", "stiff_sheet.toml"}) {
+    for (const char* file : {"hanging_sheet.toml", "all_springs.toml", "equilateral_sheet.toml",
+                             "structural_only.toml", "tearing_sheet.toml", "cloth_128.toml",
+                             "skirt.toml", "slope.toml", "stiff_sheet.toml"}) {
         SceneLoadResult loaded =
             load_scene_file(std::string(WEFT_SOURCE_DIR) + "/assets/scenes/" + file);
         ASSERT_TRUE(loaded.ok()) << file << ": " << loaded.error->message();

@@ -82,6 +82,13 @@ void DemoState::say(const std::string& text, Tone tone) {
 bool Recovery::step(Simulation& simulation, double chosen_dt, std::string& message) {
     const double step_dt = simulation.dt();
     const StepReport report = simulation.step();
+    if (report.hand_slipped) {
+        char text[96];
+        std::snprintf(text, sizeof text,
+                      "the cloth slipped from the hand: a spring at it passed %gx its rest length",
+                      DragHandle::default_grip_stretch);
+        message = text;
+    }
     if (!report.diverged()) {
         // Keep a sound state from about a quarter second back.
         if (simulation.time() - last_good_time >= 0.25) {

@@ -55,7 +55,8 @@ struct DragHandle {
     };
     std::vector<GripSpring> grip_springs;
     std::uint64_t grip_topology = 0;  // the topology version grip_springs were found in
-    double grip_stretch = 3.0;  // rest lengths: a spring at the hand longer than this slips it
+    static constexpr double default_grip_stretch = 3.0;  // rest lengths
+    double grip_stretch = default_grip_stretch;  // a spring at the hand longer than this slips it
 
     // This step's prescription, per held particle (the arrays above' order).
     std::vector<Vec3> goals;       // m, where the particle ends the step

@@ -267,6 +267,27 @@ TEST(DemoState, DragsFarOutsideTheViewAtExtremeSpeedStayFinite) {
     EXPECT_TRUE(finite_state(state.simulation.cloth()));
 }
 
+// A hand taken far beyond the sheet's reach: the cloth slips from it (sim/drag.h), the window
+// says so as news, and nothing diverges or rolls back.
+bool ascii_only(const std::string& text);  // below, with the window's other texts
+
+TEST(DemoState, AHandFarBeyondTheSheetsReachLosesItAndSaysSo) {
+    DemoState state = demo();
+    state.step(2000);  // hanging, at rest
+    ASSERT_TRUE(state.grab(view_centre, view));
+    bool said = false;
+    for (int frame = 0; frame < 120 && !said; ++frame) {
+        state.pull({1e6f, 1e6f}, view);
+        state.step(16);
+        said = state.message.find("slipped from the hand") != std::string::npos;
+    }
+    EXPECT_TRUE(said) << state.message;
+    EXPECT_EQ(state.message_tone, Tone::info);
+    EXPECT_TRUE(ascii_only(state.message)) << state.message;
+    EXPECT_FALSE(state.simulation.drag().active());
+    EXPECT_EQ(state.recovery.recoveries, 0);
+}
+
 // The issue: a right-drag well past both edges of the hanging sheet left one spring, and the
 // lower piece seemed to float. The sheet swings as it is cut; a spring swinging toward the
 // cursor between two motion events went from ahead of it to behind it, and a stroke tested

@@ -54,7 +54,7 @@ struct Job {
     const double* masses = nullptr;          // kg
     const double* inverse_masses = nullptr;  // 1/kg; 0 marks a pinned particle
 
-    float* mass_diagonal = nullptr;  // padded: m + h air_drag (+ the drag handle's terms)
+    float* mass_diagonal = nullptr;  // padded: m + h air_drag
     float* free = nullptr;           // padded: 1 for a free particle, 0 for a pinned one
     // Each particle's 3x3 diagonal block of A (zero for a pinned one), symmetric: xx yy zz
     // xy xz yz; what the coarse levels of the preconditioner are built from.

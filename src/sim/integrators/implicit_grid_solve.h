@@ -6,8 +6,8 @@
 // The general path (implicit_euler.cpp) stays the reference: it solves the same system in
 // double for any topology, and a test shows the two agree to the solve's tolerance.
 //
-// The user's drag handle enters the system (its spring to the cursor is taken implicitly,
-// stiffness and damping both), so a pull cannot make the step unstable at any dt.
+// The particles in the user's hand enter the system as constraints with prescribed
+// velocities (drag.h), so the rest of the sheet answers the hand within the step at any dt.
 // Results are the same bit for bit for any number of threads and every kernel build.
 #pragma once
 

@@ -12,6 +12,7 @@
 #include <cstring>
 #include <fstream>
 #include <glm/geometric.hpp>
+#include <string_view>
 
 #include "app/atomic_file.h"
 #include "app/camera_framing.h"
@@ -48,6 +49,17 @@ double now_seconds() {
 void prefer_software_present() {
     SDL_SetHintWithPriority(SDL_HINT_RENDER_DRIVER, "software", SDL_HINT_DEFAULT);
     SDL_SetHintWithPriority(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0", SDL_HINT_DEFAULT);
+}
+
+// With no display SDL falls back to a video driver that draws into memory, and the demo would
+// run on with no window until killed. Those drivers count only when asked for by name.
+bool has_display() {
+    const char* driver = SDL_GetCurrentVideoDriver();
+    if (!driver) return false;
+    const std::string_view name(driver);
+    if (name != "offscreen" && name != "dummy") return true;
+    const char* asked = SDL_getenv("SDL_VIDEODRIVER");
+    return asked && name == asked;
 }
 
 // Seconds a frame should last: the display's refresh period (60 Hz when it does not say).
@@ -393,6 +405,11 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
     prefer_software_present();
     if (SDL_Init(SDL_INIT_VIDEO) != 0) {
         std::fprintf(stderr, "error: cannot open a window: %s\n", SDL_GetError());
+        return exit_bad_input;
+    }
+    if (!has_display()) {
+        std::fprintf(stderr, "error: no display: set DISPLAY, or use --headless\n");
+        SDL_Quit();
         return exit_bad_input;
     }
     DemoState state(path, command_line.overrides, *scene);

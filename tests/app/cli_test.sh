@@ -124,5 +124,14 @@ check "a replay beside a copy still matches" grep -q "matches the recording" "$w
 check "a replay beside a copy draws it" test -s "$work/replay.png"
 expect 2 '^error: --record: only applies in the window' -- --headless "$scenes/hanging_sheet.toml" --steps 1 --record "$work/r.toml"
 
+# No display (over SSH, or DISPLAY unset): status 2 and what to do, never a window that is
+# not there running on until it is killed (timeout's status would be 124).
+env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER timeout 60 "$weft" \
+  "$scenes/hanging_sheet.toml" >"$work/out" 2>"$work/err"
+no_display_status=$?
+check "no display: status 2 (got $no_display_status)" test "$no_display_status" -eq 2
+check "no display: says so and what to do" \
+  grep -qx "error: no display: set DISPLAY, or use --headless" "$work/err"
+
 echo "$passes passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -19,12 +19,15 @@ std::optional<std::uint64_t> parse_unsigned(const std::string& text) {
 
 // Screenshots larger than 16384 pixels a side would need gigabytes of framebuffer.
 constexpr std::uint64_t max_image_side = 16384;
+// More frames a second of simulated time than any slow motion needs.
+constexpr std::uint64_t max_frames_per_second = 1000;
 
 }  // namespace
 
 std::variant<CommandLine, CommandLineError> parse_command_line(
     const std::vector<std::string>& args) {
     CommandLine line;
+    bool fps_given = false;
     for (std::size_t a = 0; a < args.size(); ++a) {
         const std::string& arg = args[a];
         // Options that take a value accept it as the next argument or after '='.
@@ -58,6 +61,25 @@ std::variant<CommandLine, CommandLineError> parse_command_line(
             auto value = take_value("--dump");
             if (!value || value->empty()) return CommandLineError{"--dump", "expects a file name"};
             line.dump_path = value;
+        } else if (is_option("--obj")) {
+            auto value = take_value("--obj");
+            if (!value || value->empty()) return CommandLineError{"--obj", "expects a file name"};
+            line.obj_path = value;
+        } else if (is_option("--frames")) {
+            auto value = take_value("--frames");
+            if (!value || value->empty())
+                return CommandLineError{"--frames", "expects a folder name"};
+            line.frames_dir = value;
+        } else if (is_option("--fps")) {
+            auto value = take_value("--fps");
+            auto fps = value ? parse_unsigned(*value) : std::nullopt;
+            if (!fps || *fps < 1 || *fps > max_frames_per_second)
+                return CommandLineError{"--fps",
+                                        "expects a whole number of frames a second from 1 to "
+                                        "1000, got '" +
+                                            value.value_or("") + "'"};
+            line.frames_per_second = static_cast<int>(*fps);
+            fps_given = true;
         } else if (is_option("--screenshot")) {
             auto value = take_value("--screenshot");
             if (!value || value->empty())
@@ -113,6 +135,8 @@ std::variant<CommandLine, CommandLineError> parse_command_line(
         }
     }
     if (line.help || line.version) return line;
+    if (fps_given && !line.frames_dir)
+        return CommandLineError{"--fps", "only applies with --frames DIR"};
     if (line.replay_path) {
         // A recording carries its scene and its length.
         if (line.scene_path)
@@ -124,13 +148,19 @@ std::variant<CommandLine, CommandLineError> parse_command_line(
         if (line.record_path) return CommandLineError{"--record", "cannot record a replay"};
     }
     if (line.headless) {
-        if (line.replay_path) return line;
+        if (line.replay_path) {
+            if (line.frames_dir)
+                return CommandLineError{"--frames", "runs with a scene and --steps, not --replay"};
+            return line;
+        }
         if (!line.steps) return CommandLineError{"--headless", "needs --steps N"};
         if (line.record_path) return CommandLineError{"--record", "only applies in the window"};
     } else {
         // The window takes --dump (written when it closes) and --size (its size).
         const char* headless_only = line.steps             ? "--steps"
                                     : line.screenshot_path ? "--screenshot"
+                                    : line.obj_path        ? "--obj"
+                                    : line.frames_dir      ? "--frames"
                                                            : nullptr;
         if (headless_only) return CommandLineError{headless_only, "only applies with --headless"};
     }
@@ -142,8 +172,9 @@ const char* usage_text() {
            "  weft [SCENE.toml] [--set KEY=VALUE]... [--compare METHOD[=DT]]... [--record FILE]\n"
            "  weft --replay SESSION.toml [--compare METHOD[=DT]]...\n"
            "  weft --headless [SCENE.toml] --steps N [--set KEY=VALUE]... [--dump STATE.csv]\n"
+           "       [--obj CLOTH.obj] [--frames DIR [--fps N]]\n"
            "       [--screenshot IMAGE.png [--size WxH] [--compare METHOD[=DT]]...]\n"
-           "  weft --headless --replay SESSION.toml [--dump STATE.csv]\n"
+           "  weft --headless --replay SESSION.toml [--dump STATE.csv] [--obj CLOTH.obj]\n"
            "       [--screenshot IMAGE.png [--size WxH] [--compare METHOD[=DT]]...]\n"
            "  weft --help | --version\n"
            "\n"
@@ -153,6 +184,11 @@ const char* usage_text() {
            "  --steps N         run exactly N steps of the scene's dt (headless)\n"
            "  --dump FILE       write row,col,x,y,z,vx,vy,vz per particle after the run\n"
            "                    (in the window: when it closes)\n"
+           "  --obj FILE        write the cloth after the run as Wavefront OBJ: a v line per\n"
+           "                    particle in the dump's order, an f line per intact triangle\n"
+           "  --frames DIR      write DIR/frame-00000.png, ... one per 1/30 s of simulated\n"
+           "                    time from the start, at --size, with the --compare copies\n"
+           "  --fps N           frames a second of simulated time for --frames (1-1000)\n"
            "  --size WxH        screenshot size, or the window's (default 1280x720)\n"
            "  --compare M[=DT]  show a copy of the scene beside it, stepped by integrator M\n"
            "                    (at DT seconds; default the scene's dt), fed the same hand;\n"

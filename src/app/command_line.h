@@ -2,8 +2,9 @@
 //   weft [SCENE.toml] [--set KEY=VALUE]... [--compare METHOD[=DT]]... [--record FILE]
 //   weft --replay SESSION.toml [--compare METHOD[=DT]]...
 //   weft --headless [SCENE.toml] --steps N [--set KEY=VALUE]... [--dump STATE.csv]
+//        [--obj CLOTH.obj] [--frames DIR [--fps N]]
 //        [--screenshot IMAGE.png [--size WxH] [--compare METHOD[=DT]]...]
-//   weft --headless --replay SESSION.toml [--dump STATE.csv]
+//   weft --headless --replay SESSION.toml [--dump STATE.csv] [--obj CLOTH.obj]
 //        [--screenshot IMAGE.png [--size WxH] [--compare METHOD[=DT]]...]
 //   weft --help | --version
 #pragma once
@@ -24,6 +25,9 @@ struct CommandLine {
     std::vector<std::string> overrides;     // "KEY=VALUE", in order
     std::optional<std::uint64_t> steps;     // --steps N
     std::optional<std::string> dump_path;   // --dump FILE.csv
+    std::optional<std::string> obj_path;    // --obj FILE.obj: the final cloth as a mesh
+    std::optional<std::string> frames_dir;  // --frames DIR: DIR/frame-00000.png, ...
+    int frames_per_second = 30;             // --fps N: frames per second of simulated time
     std::optional<std::string> screenshot_path;
     int screenshot_width = 1280;  // pixels, --size WxH
     int screenshot_height = 720;

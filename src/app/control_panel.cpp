@@ -40,6 +40,7 @@ const char* const controls_text[][2] = {
     {"R", "reset the scene"},
     {"F12", "screenshot of the view (weft-screenshot-NNNN.png, never overwritten)"},
     {"Shift+F12", "screenshot of the whole window, panel included"},
+    {"O", "the cloth as a mesh (weft-cloth-NNNN.obj: for Blender, or a scene's cloth.mesh)"},
     {"F5", "start recording the session (restarts the scene) / stop and save it"},
     {"H or F1", "this help"},
     {"Esc", "quit"},

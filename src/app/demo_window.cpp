@@ -12,6 +12,7 @@
 #include <cstring>
 #include <fstream>
 #include <glm/geometric.hpp>
+#include <sstream>
 #include <string_view>
 
 #include "app/atomic_file.h"
@@ -20,6 +21,7 @@
 #include "app/demo_state.h"
 #include "app/hand_tools.h"
 #include "app/headless_runner.h"
+#include "app/obj_export.h"
 #include "app/screen_layout.h"
 #include "app/screenshot_names.h"
 #include "app/session_record.h"
@@ -179,6 +181,18 @@ void toggle_recording(DemoState& state) {
         state.say("could not save the session: " + error, Tone::problem);
 }
 
+// O: the cloth as it is now, as Wavefront OBJ beside the screenshots (obj_export.h).
+void save_cloth_obj(DemoState& state) {
+    const std::string path = next_free_path(".", "weft-cloth", "obj");
+    std::ostringstream text;
+    write_cloth_obj(state.simulation.cloth(), state.simulation.scene().name, text);
+    std::string error;
+    if (write_file_atomically(path, text.str(), false, error))
+        state.say("saved the cloth as a mesh to " + path, Tone::success);
+    else
+        state.say("could not save the cloth: " + error, Tone::problem);
+}
+
 // Returns false when the user quits.
 bool handle_event(const SDL_Event& event, DemoState& state, Window& w) {
     ImGui_ImplSDL2_ProcessEvent(&event);
@@ -203,6 +217,9 @@ bool handle_event(const SDL_Event& event, DemoState& state, Window& w) {
                     w.save_window_next_frame = true;
                 else
                     save_screenshot(state, w);
+                break;
+            case SDLK_o:
+                save_cloth_obj(state);
                 break;
             case SDLK_h:
             case SDLK_F1:

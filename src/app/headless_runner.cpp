@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <glm/geometric.hpp>
 #include <optional>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "app/demo_state.h"
+#include "app/obj_export.h"
 #include "app/session_record.h"
 #include "app/side_by_side.h"
 #include "app/state_dump.h"
@@ -64,45 +66,72 @@ void print_divergence(const Simulation& simulation, const std::string& why, std:
 
 namespace {
 
-// Opens the dump before running, so an unwritable path fails at once, not after the run.
-bool open_dump(const CommandLine& command_line, std::ofstream& dump) {
-    if (!command_line.dump_path) return true;
-    dump.open(*command_line.dump_path, std::ios::binary | std::ios::trunc);
-    if (dump) return true;
-    print_error(*command_line.dump_path, std::string("cannot write: ") + std::strerror(errno));
+// The files a run writes at its end, opened before it starts so that an unwritable path
+// fails at once, not after the run.
+struct OutputFiles {
+    std::ofstream dump;
+    std::ofstream obj;
+};
+
+bool open_output(const std::optional<std::string>& path, std::ofstream& file) {
+    if (!path) return true;
+    file.open(*path, std::ios::binary | std::ios::trunc);
+    if (file) return true;
+    print_error(*path, std::string("cannot write: ") + std::strerror(errno));
     return false;
 }
 
-// Writes the dump (of the main run, runs[0]) and the screenshot asked for, the runs side by
-// side in equal columns, over the ground grid at `ground_height` (m); false (after saying
+bool open_outputs(const CommandLine& command_line, OutputFiles& files) {
+    return open_output(command_line.dump_path, files.dump) &&
+           open_output(command_line.obj_path, files.obj);
+}
+
+// The runs side by side in equal columns of a `width` x `height` image, over the ground grid
+// at `ground_height` (m), seen through the main run's scene camera.
+raster::Framebuffer draw_runs(std::span<const Simulation* const> runs, int width, int height,
+                              float ground_height, WorkerPool& pool) {
+    raster::Framebuffer framebuffer(width, height);
+    std::vector<view::ClothView> cloth_views;
+    cloth_views.reserve(runs.size());
+    std::vector<app::RunView> columns;
+    for (const Simulation* run : runs) {
+        cloth_views.emplace_back(run->cloth());
+        columns.push_back({run, &cloth_views.back()});
+    }
+    std::vector<raster::Framebuffer> scratch;
+    const int column_width = std::max(1, width / static_cast<int>(runs.size()));
+    app::render_columns(framebuffer, scratch, view::scene_camera(runs[0]->scene()), columns,
+                        column_width, view::FrameOptions{}, ground_height, &pool);
+    return framebuffer;
+}
+
+// Writes the dump and the OBJ file (of the main run, runs[0]) and the screenshot asked for,
+// the runs side by side, over the ground grid at `ground_height` (m); false (after saying
 // why) if one fails.
-bool write_outputs(const CommandLine& command_line, std::ofstream& dump,
+bool write_outputs(const CommandLine& command_line, OutputFiles& files,
                    std::span<const Simulation* const> runs, float ground_height) {
     const Simulation& simulation = *runs[0];
-    if (dump.is_open()) {
-        write_state_csv(simulation.cloth(), dump);
-        dump.flush();
-        if (!dump) {
+    if (files.dump.is_open()) {
+        write_state_csv(simulation.cloth(), files.dump);
+        files.dump.flush();
+        if (!files.dump) {
             print_error(*command_line.dump_path, "write failed");
             return false;
         }
     }
-    if (command_line.screenshot_path) {
-        raster::Framebuffer framebuffer(command_line.screenshot_width,
-                                        command_line.screenshot_height);
-        std::vector<view::ClothView> cloth_views;
-        cloth_views.reserve(runs.size());
-        std::vector<app::RunView> columns;
-        for (const Simulation* run : runs) {
-            cloth_views.emplace_back(run->cloth());
-            columns.push_back({run, &cloth_views.back()});
+    if (files.obj.is_open()) {
+        app::write_cloth_obj(simulation.cloth(), simulation.scene().name, files.obj);
+        files.obj.flush();
+        if (!files.obj) {
+            print_error(*command_line.obj_path, "write failed");
+            return false;
         }
+    }
+    if (command_line.screenshot_path) {
         WorkerPool pool(default_thread_count());  // bands: the same image on any count
-        std::vector<raster::Framebuffer> scratch;
-        const int column_width =
-            std::max(1, command_line.screenshot_width / static_cast<int>(runs.size()));
-        app::render_columns(framebuffer, scratch, view::scene_camera(simulation.scene()), columns,
-                            column_width, view::FrameOptions{}, ground_height, &pool);
+        const raster::Framebuffer framebuffer =
+            draw_runs(runs, command_line.screenshot_width, command_line.screenshot_height,
+                      ground_height, pool);
         std::string error;
         if (!raster::write_png(framebuffer, *command_line.screenshot_path, &error)) {
             print_error(*command_line.screenshot_path, error);
@@ -123,16 +152,97 @@ float final_ground_height(const Simulation& simulation, float start_ground_heigh
 }
 
 // The copies --compare asks for: the scene with another integrator (and dt).
-std::vector<Simulation> comparison_runs(const Scene& scene, const CommandLine& command_line) {
-    std::vector<Simulation> copies;
+struct Copy {
+    Simulation simulation;
+    bool stopped = false;  // diverged, and left where it was caught
+};
+
+std::vector<Copy> comparison_runs(const Scene& scene, const CommandLine& command_line) {
+    std::vector<Copy> copies;
     for (const CommandLine::Comparison& comparison : command_line.comparisons) {
         Scene copy = scene;
         copy.solver.integrator = *integrator_from_name(comparison.integrator);
         if (comparison.dt > 0.0) copy.solver.dt = comparison.dt;
-        copies.emplace_back(copy);
+        copies.push_back({Simulation(copy)});
     }
     return copies;
 }
+
+// Steps each copy with its own dt to the simulated time `time` (s); one that diverges stops
+// where it was caught and says so, once.
+void catch_up(std::vector<Copy>& copies, double time) {
+    for (Copy& copy : copies) {
+        Simulation& run = copy.simulation;
+        while (!copy.stopped && run.time() + 0.5 * run.dt() <= time) {
+            StepReport report = run.step();
+            if (report.diverged()) {
+                std::fprintf(stderr, "note: the %s copy diverged at t=%.6g s: %s\n",
+                             integrator_name(run.integrator()), run.time(),
+                             report.divergence->c_str());
+                copy.stopped = true;
+            }
+        }
+    }
+}
+
+std::vector<const Simulation*> runs_of(const Simulation& main, const std::vector<Copy>& copies) {
+    std::vector<const Simulation*> runs{&main};
+    for (const Copy& copy : copies) runs.push_back(&copy.simulation);
+    return runs;
+}
+
+// --frames DIR: frame k, DIR/frame-KKKKK.png, shows the runs at k/fps s of simulated time (the
+// nearest step), over a ground grid that stays where it started, so the frames make a video.
+class FrameWriter {
+  public:
+    FrameWriter(const CommandLine& command_line, float ground_height)
+        : directory_(*command_line.frames_dir),
+          frames_per_second_(command_line.frames_per_second),
+          width_(command_line.screenshot_width),
+          height_(command_line.screenshot_height),
+          ground_height_(ground_height) {}
+
+    // Creates the folder; false (after saying why) if it cannot be.
+    bool open() {
+        std::error_code error;
+        std::filesystem::create_directories(directory_, error);
+        if (error || !std::filesystem::is_directory(directory_)) {
+            print_error(directory_, "cannot make the frames' folder: " +
+                                        (error ? error.message() : std::string("not a folder")));
+            return false;
+        }
+        return true;
+    }
+
+    // Writes every frame due by the main run's time, the copies caught up first; false (after
+    // saying why) if one cannot be written.
+    bool write_due(const Simulation& main, std::vector<Copy>& copies) {
+        while (static_cast<double>(next_) / frames_per_second_ <= main.time() + 0.5 * main.dt()) {
+            catch_up(copies, main.time());
+            const std::vector<const Simulation*> runs = runs_of(main, copies);
+            const raster::Framebuffer frame =
+                draw_runs(runs, width_, height_, ground_height_, pool_);
+            char name[32];
+            std::snprintf(name, sizeof name, "frame-%05llu.png", next_);
+            const std::string path = (std::filesystem::path(directory_) / name).string();
+            std::string error;
+            if (!raster::write_png(frame, path, &error)) {
+                print_error(path, error);
+                return false;
+            }
+            ++next_;
+        }
+        return true;
+    }
+
+  private:
+    std::string directory_;
+    int frames_per_second_;
+    int width_, height_;
+    float ground_height_;
+    unsigned long long next_ = 0;              // the next frame's number
+    WorkerPool pool_{default_thread_count()};  // bands: the same image on any count
+};
 
 }  // namespace
 
@@ -140,12 +250,22 @@ int run_headless(const CommandLine& command_line) {
     std::optional<Scene> scene =
         load_checked_scene(*command_line.scene_path, command_line.overrides);
     if (!scene) return exit_bad_input;
-    std::ofstream dump;
-    if (!open_dump(command_line, dump)) return exit_bad_input;
+    OutputFiles files;
+    if (!open_outputs(command_line, files)) return exit_bad_input;
 
     Simulation simulation(*scene);
     const float start_ground_height =
         view::ground_height_below(simulation.cloth(), simulation.colliders());
+    std::optional<FrameWriter> frames;
+    if (command_line.frames_dir) {
+        frames.emplace(command_line, start_ground_height);
+        if (!frames->open()) return exit_bad_input;
+    }
+    // Copies only to be drawn: each follows the main run to the same simulated time with its
+    // own dt.
+    std::vector<Copy> copies;
+    if (command_line.screenshot_path || frames) copies = comparison_runs(*scene, command_line);
+    if (frames && !frames->write_due(simulation, copies)) return exit_bad_input;
     int status = exit_ok;
     for (std::uint64_t step = 0; step < *command_line.steps; ++step) {
         StepReport report = simulation.step();
@@ -154,26 +274,11 @@ int run_headless(const CommandLine& command_line) {
             status = exit_diverged;
             break;
         }
+        if (frames && !frames->write_due(simulation, copies)) return exit_bad_input;
     }
-    // Copies for the screenshot only: each follows the main run to the same simulated time
-    // with its own dt; one that diverges stops where it was caught and says so.
-    std::vector<Simulation> copies;
-    if (command_line.screenshot_path) copies = comparison_runs(*scene, command_line);
-    for (Simulation& copy : copies) {
-        while (copy.time() + 0.5 * copy.dt() <= simulation.time()) {
-            StepReport report = copy.step();
-            if (report.diverged()) {
-                std::fprintf(stderr, "note: the %s copy diverged at t=%.6g s: %s\n",
-                             integrator_name(copy.integrator()), copy.time(),
-                             report.divergence->c_str());
-                break;
-            }
-        }
-    }
-    std::vector<const Simulation*> runs{&simulation};
-    for (const Simulation& copy : copies) runs.push_back(&copy);
+    catch_up(copies, simulation.time());
     // Also written on divergence: the state that was caught is what one wants to look at.
-    if (!write_outputs(command_line, dump, runs,
+    if (!write_outputs(command_line, files, runs_of(simulation, copies),
                        final_ground_height(simulation, start_ground_height)))
         return exit_bad_input;
     return status;
@@ -187,8 +292,8 @@ int run_headless_replay(const CommandLine& command_line) {
         std::fprintf(stderr, "error: %s\n", error.c_str());
         return exit_bad_input;
     }
-    std::ofstream dump;
-    if (!open_dump(command_line, dump)) return exit_bad_input;
+    OutputFiles files;
+    if (!open_outputs(command_line, files)) return exit_bad_input;
     SceneLoadResult scene = load_scene_text(record->scene_toml, path);  // checked when read
     app::DemoState state(path, {}, *scene.scene);
     for (const CommandLine::Comparison& comparison : command_line.comparisons)
@@ -205,7 +310,7 @@ int run_headless_replay(const CommandLine& command_line) {
         matches ? "matches the recording" : "DIFFERS from the recording");
     std::vector<const Simulation*> runs;
     for (int run = 0; run < state.run_count(); ++run) runs.push_back(&state.run(run));
-    if (!write_outputs(command_line, dump, runs,
+    if (!write_outputs(command_line, files, runs,
                        final_ground_height(state.simulation, state.ground_height)))
         return exit_bad_input;
     return matches ? exit_ok : exit_replay_differs;

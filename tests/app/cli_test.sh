@@ -124,6 +124,39 @@ check "a replay beside a copy still matches" grep -q "matches the recording" "$w
 check "a replay beside a copy draws it" test -s "$work/replay.png"
 expect 2 '^error: --record: only applies in the window' -- --headless "$scenes/hanging_sheet.toml" --steps 1 --record "$work/r.toml"
 
+# --obj: the final cloth as Wavefront OBJ, its v lines the dump's positions digit for digit
+# (both round-trip doubles), an f line per triangle of the intact 24² sheet.
+expect 0 quiet -- --headless "$scenes/hanging_sheet.toml" --steps 200 --dump "$work/obj.csv" \
+  --obj "$work/cloth.obj"
+check "--obj: a v line per particle, at the dump's positions" \
+  cmp -s <(awk -F, 'NR > 1 { print $3, $4, $5 }' "$work/obj.csv") \
+  <(awk '$1 == "v" { print $2, $3, $4 }' "$work/cloth.obj")
+check "--obj: two f lines a cell" test "$(grep -c '^f ' "$work/cloth.obj")" -eq $((2 * 23 * 23))
+expect 2 "^error: $work/no/such/folder/cloth.obj: cannot write" -- --headless \
+  "$scenes/hanging_sheet.toml" --steps 1 --obj "$work/no/such/folder/cloth.obj"
+expect 2 '^error: --obj: only applies with --headless' -- "$scenes/hanging_sheet.toml" --obj x.obj
+
+# --frames: one PNG per 1/30 s of simulated time from the start, so 0.1 s (400 steps of
+# 0.25 ms) is frames 0 to 3; --fps 60 makes it 0 to 6. The sheet moves between them.
+expect 0 quiet -- --headless "$scenes/hanging_sheet.toml" --steps 400 --frames "$work/frames" \
+  --size 64x36
+check "--frames: frame-00000.png to frame-00003.png" \
+  test "$(ls "$work/frames" | tr '\n' ' ')" = "frame-00000.png frame-00001.png frame-00002.png frame-00003.png "
+check "--frames: the sheet moves from frame to frame" \
+  bash -c "! cmp -s '$work/frames/frame-00000.png' '$work/frames/frame-00003.png'"
+expect 0 quiet -- --headless "$scenes/hanging_sheet.toml" --steps 400 --frames "$work/frames60" \
+  --fps 60 --size 64x36
+check "--frames --fps 60: seven frames" test "$(ls "$work/frames60" | wc -l)" -eq 7
+expect 2 '^error: --fps: only applies with --frames' -- --headless "$scenes/hanging_sheet.toml" \
+  --steps 1 --fps 60
+expect 2 '^error: --fps: expects a whole number' -- --headless "$scenes/hanging_sheet.toml" \
+  --steps 1 --frames "$work/f" --fps 0
+expect 2 '^error: --frames: only applies with --headless' -- "$scenes/hanging_sheet.toml" \
+  --frames "$work/f"
+touch "$work/a-file"
+expect 2 "^error: $work/a-file/frames: cannot make the frames' folder" -- --headless \
+  "$scenes/hanging_sheet.toml" --steps 1 --frames "$work/a-file/frames"
+
 # No display (over SSH, or DISPLAY unset): status 2 and what to do, never a window that is
 # not there running on until it is killed (timeout's status would be 124).
 env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER timeout 60 "$weft" \

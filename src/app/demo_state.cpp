@@ -11,6 +11,7 @@
 
 #include "app/atomic_file.h"
 #include "app/hand_tools.h"
+#include "app/number_format.h"
 #include "sim/scene_edit_toml.h"
 #include "sim/scene_loader.h"
 #include "sim/scene_writer.h"
@@ -262,6 +263,7 @@ std::optional<std::string> DemoState::edit_companion(std::size_t index,
     Simulation& companion = companions[index].simulation;
     Scene checked = companion.scene();
     if (auto problem = apply_scene_edits(checked, edits)) return "error: " + *problem;
+    if (auto problem = window_dt_problem(checked.solver.dt)) return "error: " + *problem;
     // dt differs from the running one only where the user set it, and only then is it the
     // copy's new chosen dt (not whatever recovery had halved it to).
     if (checked.solver.dt != companion.dt()) companions[index].restart_dt = checked.solver.dt;
@@ -413,11 +415,20 @@ std::optional<std::string> DemoState::edit(const std::vector<SceneEdit>& edits) 
     return edit(edits, "");
 }
 
+std::optional<std::string> window_dt_problem(double dt) {
+    if (dt <= StepClock::max_dt) return std::nullopt;
+    return "solver.dt: at most " + significant_text(StepClock::max_dt * 1e3, 3) +
+           " ms in the window, which steps in real time (ten steps a second at least); got " +
+           significant_text(dt * 1e3, 3) + " ms";
+}
+
 std::optional<std::string> DemoState::edit(const std::vector<SceneEdit>& edits,
                                            const std::string& where) {
     if (replaying) return std::string("a session is replaying: stop it to change parameters");
     Scene checked = simulation.scene();
     if (auto problem = apply_scene_edits(checked, edits))
+        return "error: " + (where.empty() ? "" : where + ": ") + *problem;
+    if (auto problem = window_dt_problem(checked.solver.dt))
         return "error: " + (where.empty() ? "" : where + ": ") + *problem;
     if (edits.empty()) return std::nullopt;
     ClothEvent event;
@@ -471,6 +482,10 @@ bool DemoState::load_scene(const std::string& path, std::string& error) {
     if (!loaded.ok()) {
         error = loaded.error->message();
         return false;  // the running simulation is untouched
+    }
+    if (auto problem = window_dt_problem(loaded.scene->solver.dt)) {
+        error = path + ": " + *problem;
+        return false;
     }
     scene_path = path;
     scene = *loaded.scene;

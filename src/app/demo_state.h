@@ -112,6 +112,10 @@ struct Companion {
     double seconds = 0.0;  // stepping in the last frame, s
 };
 
+// Why `dt` (s) cannot be the window's step, or nothing: the window steps in real time and
+// takes steps of at most StepClock::max_dt.
+std::optional<std::string> window_dt_problem(double dt);
+
 struct DemoState {
     std::string scene_path;
     std::vector<std::string> overrides;

@@ -419,6 +419,16 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
         scene = load_checked_scene(path, command_line.overrides);
     }
     if (!scene) return exit_bad_input;
+    if (auto problem = window_dt_problem(scene->solver.dt)) {
+        std::fprintf(stderr, "error: %s: %s\n", path.c_str(), problem->c_str());
+        return exit_bad_input;
+    }
+    for (const CommandLine::Comparison& comparison : command_line.comparisons) {
+        if (auto problem = window_dt_problem(comparison.dt)) {
+            std::fprintf(stderr, "error: --compare: %s\n", problem->c_str());
+            return exit_bad_input;
+        }
+    }
     prefer_software_present();
     if (SDL_Init(SDL_INIT_VIDEO) != 0) {
         std::fprintf(stderr, "error: cannot open a window: %s\n", SDL_GetError());

@@ -18,11 +18,11 @@ void forces_section(DemoState& state) {
     // The wind as the eye sees it: how strong and from where along the ground, and how much
     // of it blows up (or down). A horizontal part untouched this frame is sent back as it is,
     // not through the sliders' floats.
-    float strength = static_cast<float>(std::hypot(f.wind[0], f.wind[2]));
-    float heading = static_cast<float>(std::atan2(f.wind[2], f.wind[0]) * 180.0 / M_PI);
+    double strength = std::hypot(f.wind[0], f.wind[2]);
+    double heading = std::atan2(f.wind[2], f.wind[0]) * 180.0 / M_PI;
     double upward = f.wind[1];
-    bool horizontal_changed = ImGui::SliderFloat("wind (m/s)", &strength, 0.0f, 20.0f);
-    horizontal_changed |= ImGui::SliderFloat("wind heading (deg)", &heading, -180.0f, 180.0f);
+    bool horizontal_changed = slider("wind (m/s)", strength, 0.0, 20.0, "%.3f");
+    horizontal_changed |= slider("wind heading (deg)", heading, -180.0, 180.0, "%.3f");
     const bool upward_changed = slider("wind up (m/s)", upward, -10.0, 10.0, "%.3g");
     if (horizontal_changed || upward_changed) {
         Vec3d wind = f.wind;

@@ -1,4 +1,5 @@
 #include <imgui.h>
+#include <cmath>
 #include <string>
 
 #include "app/grid_edit.h"
@@ -54,14 +55,24 @@ void grid_section(DemoState& state) {
     if (ImGui::Combo("orientation", &orientation, "vertical\0horizontal\0"))
         draft.orientation = static_cast<Orientation>(orientation);
     pins_combo(draft);
-    const long long particles = grid_particle_count(draft);
-    ImGui::Text("%s", counted(particles, "particle", "particles").c_str());
+    // A size that cannot be a grid is said as it is typed, in place of a count that would
+    // read as a negative number of particles, and cannot be applied.
+    const char* bad_size = draft.rows < 1   ? "rows: at least 1"
+                           : draft.cols < 1 ? "cols: at least 1"
+                           : !(draft.spacing > 0.0 && std::isfinite(draft.spacing))
+                               ? "spacing: more than 0 m"
+                               : nullptr;
+    const long long particles = bad_size ? 0 : grid_particle_count(draft);
+    if (bad_size)
+        ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", bad_size);
+    else
+        ImGui::Text("%s", counted(particles, "particle", "particles").c_str());
     // Said before Apply, so the number typed is seen to be too many while it is typed.
     if (particles > max_window_grid_particles)
         ImGui::TextColored(ImVec4(1, 0.6f, 0.2f, 1), "more than the window's limit of %s",
                            counted(max_window_grid_particles, "particle", "particles").c_str());
     const bool edited = !same_grid(draft, running);
-    ImGui::BeginDisabled(!edited);
+    ImGui::BeginDisabled(!edited || bad_size != nullptr);
     if (ImGui::Button("apply (rebuilds the cloth)"))
         answer_edit(grid_control, apply_grid(state, draft));
     ImGui::SameLine();

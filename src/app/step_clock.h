@@ -38,6 +38,10 @@ class StepClock {
     // Dropping every shortfall at once lost 4-8 % of real time on the 64² drape, whose
     // steps take about 0.7 of dt with the host's speed varying from frame to frame.
     static constexpr double max_debt = 0.1;
+    // s: the longest step the window takes. A frame carries at most max_debt of simulated
+    // time over from one that fell behind, so a longer step could wait for ever, and under
+    // ten steps a second no longer reads as motion.
+    static constexpr double max_dt = max_debt;
 
     void reset() { owed_ = 0.0; }
     double owed() const { return owed_; }  // s of simulated time not yet stepped

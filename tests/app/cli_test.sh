@@ -157,6 +157,13 @@ touch "$work/a-file"
 expect 2 "^error: $work/a-file/frames: cannot make the frames' folder" -- --headless \
   "$scenes/hanging_sheet.toml" --steps 1 --frames "$work/a-file/frames"
 
+# The window steps in real time: a dt it cannot step (one step in more than 100 ms) is refused
+# before any window opens, in the scene and in a copy.
+expect 2 "^error: $scenes/hanging_sheet.toml: solver.dt: at most 100 ms in the window" -- \
+  "$scenes/hanging_sheet.toml" --set solver.dt=1e6
+expect 2 '^error: --compare: solver.dt: at most 100 ms in the window' -- \
+  "$scenes/hanging_sheet.toml" --compare rk4=0.5
+
 # No display (over SSH, or DISPLAY unset): status 2 and what to do, never a window that is
 # not there running on until it is killed (timeout's status would be 124).
 env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER timeout 60 "$weft" \

@@ -7,6 +7,8 @@
 // in words the panel's font can draw; a grid is rebuilt with rows × cols particles.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "app/demo_state.h"
 #include "app/edit_answer.h"
 #include "app/grid_edit.h"
@@ -29,6 +31,24 @@ std::string refused(DemoState& state, Edit edit) {
     EXPECT_EQ(hash_state(state.simulation.cloth()), hash);
     EXPECT_EQ(state.rig.fov_degrees, fov);
     return error ? refusal_text(*error) : std::string();
+}
+
+// The window steps in real time: a dt it could not step in a frame (1e9 ms froze the run with
+// "0 steps a frame") is refused with the bound, in the main run and in a copy; the longest
+// allowed is taken.
+TEST(PanelEdits, ADtTheWindowCannotStepIsRefused) {
+    DemoState state = demo();
+    state.add_companion(Integrator::rk4, state.simulation.dt());
+    for (const double dt : {1e6, 0.5, std::nextafter(StepClock::max_dt, 1.0)}) {
+        const std::string why = refused(state, [&](DemoState& s) {
+            return s.edit({{SceneKey::dt, dt}});
+        });
+        EXPECT_NE(why.find("solver.dt: at most 100 ms in the window"), std::string::npos) << why;
+        EXPECT_TRUE(state.edit_companion(0, {{SceneKey::dt, dt}}).has_value());
+    }
+    EXPECT_FALSE(state.edit({{SceneKey::dt, StepClock::max_dt}}));
+    EXPECT_EQ(state.simulation.dt(), StepClock::max_dt);
+    EXPECT_FALSE(state.edit_companion(0, {{SceneKey::dt, StepClock::max_dt}}));
 }
 
 TEST(PanelEdits, GravityIsAVectorCheckedAndAppliedLive) {

@@ -127,6 +127,13 @@ glm::vec2 cursor() {
 
 // ---- input -----------------------------------------------------------------------------
 
+bool over_panel(const Window& w) {
+    const glm::vec2 at = cursor();
+    const ScreenRect& panel = w.layout.panel;
+    return at.x >= panel.x && at.x < panel.right() && at.y >= panel.y &&
+           at.y < panel.y + panel.height;
+}
+
 void save_screenshot(DemoState& state, const Window& w) {
     const std::string path = next_screenshot_path(".");
     std::string error;
@@ -277,7 +284,9 @@ bool handle_event(const SDL_Event& event, DemoState& state, Window& w) {
         state.pull(hand_point(state, w), view);
         state.cut_to(hand_point(state, w), view, w.hand_column);
     }
-    if (event.type == SDL_MOUSEWHEEL && !io.WantCaptureMouse)
+    // Dear ImGui learns that the cursor is over the panel only at the next frame, so a wheel
+    // that comes with the cursor's arrival on the panel is judged by where the cursor is.
+    if (event.type == SDL_MOUSEWHEEL && !io.WantCaptureMouse && !over_panel(w))
         state.rig.zoom(static_cast<float>(event.wheel.y));
     return true;
 }

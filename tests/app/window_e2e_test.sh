@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # End-to-end test of the real weft window under Xvfb, driven by xdotool:
-#   1. the camera keys change the view (two F12 screenshots differ);
+#   1. the camera keys change the view (two F12 screenshots differ), and the wheel over the
+#      panel does not;
 #   2. space + mouse on the cloth pulls the cloth where the mouse went (state dumped when
 #      the window closes, while still held, against an undisturbed run);
 #   3. space + mouse on empty background leaves the cloth as an undisturbed run leaves it;
@@ -74,6 +75,12 @@ particle_x() { awk -F, -v r="$2" -v c="$3" 'NR > 1 && $1 == r && $2 == c { print
 start_weft rest
 xdotool key --window "$window" F12
 sleep 0.5
+# The wheel turned as the cursor arrives over the panel scrolls the panel only: the view is
+# as it was (the first wheel over the panel of a fresh window used to zoom the view too).
+xdotool mousemove --window "$window" 150 300 click 5 click 5 click 5
+sleep 0.5
+xdotool key --window "$window" F12
+sleep 0.5
 xdotool keydown --window "$window" w; sleep 0.6; xdotool keyup --window "$window" w
 xdotool keydown --window "$window" Left; sleep 0.4; xdotool keyup --window "$window" Left
 sleep 0.3
@@ -82,8 +89,11 @@ sleep 0.5
 xdotool key --window "$window" c      # back to the scene's camera before quitting
 quit_weft
 shots=("$work"/rest/weft-screenshot-*.png)
-check test "${#shots[@]}" -eq 2
-changed=$("$png_diff" "${shots[0]}" "${shots[1]}")
+check test "${#shots[@]}" -eq 3
+wheeled=$("$png_diff" "${shots[0]}" "${shots[1]}")
+echo "the wheel over the panel changed $wheeled of the view's pixels"
+check awk -v f="$wheeled" 'BEGIN { exit !(f < 0.01) }'
+changed=$("$png_diff" "${shots[1]}" "${shots[2]}")
 echo "camera keys changed $changed of the pixels"
 check awk -v f="$changed" 'BEGIN { exit !(f > 0.05) }'
 check test -s "$work/rest/state.csv"

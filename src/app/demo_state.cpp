@@ -97,6 +97,7 @@ bool Recovery::step(Simulation& simulation, double chosen_dt, std::string& messa
             last_good_time = simulation.time();
         }
         sound_seconds += step_dt;
+        if (sound_seconds >= sound_seconds_before_growth) restarts_in_a_row = 0;
         if (sound_seconds < growth_wait) return true;
         if (trying_grown_dt) {  // the grown dt held as long as it took to earn it
             trying_grown_dt = false;
@@ -132,7 +133,9 @@ bool Recovery::step(Simulation& simulation, double chosen_dt, std::string& messa
     if (halved_dt < smallest_recovery_dt) {
         simulation.reset();
         simulation.set_dt(chosen_dt);
+        const int restarts = restarts_in_a_row + 1;
         forget();
+        restarts_in_a_row = restarts;
         std::snprintf(text, sizeof text,
                       "diverged at t=%.3f s: %s; no step above %.0e s holds these parameters, "
                       "so the scene restarted at dt %.3g ms",
@@ -154,6 +157,18 @@ bool Recovery::step(Simulation& simulation, double chosen_dt, std::string& messa
     ++recoveries;
     message = text;
     return false;
+}
+
+void DemoState::pause_hopeless(Recovery& hopeless, const std::string& run) {
+    paused = true;
+    single_step = false;
+    say("paused: " + run + " restarted " + std::to_string(hopeless.restarts_in_a_row) +
+            " times in a row, diverging at every step down to " +
+            significant_text(smallest_recovery_dt * 1e3, 1) +
+            " ms. Lower a stiffness, raise the particle mass or the damping, or choose "
+            "implicit Euler; then P to run again",
+        Tone::problem);
+    hopeless.restarts_in_a_row = 0;  // P gives these parameters as many tries again
 }
 
 int DemoState::step(int steps) {
@@ -189,6 +204,10 @@ int DemoState::step(int steps) {
                 }
                 if (!companion_sound) {
                     companion.cloth_view = view::ClothView(companion.simulation.cloth());
+                    if (companion.recovery.hopeless()) {
+                        pause_hopeless(companion.recovery, "copy " + std::to_string(c + 1));
+                        return s + 1;
+                    }
                     break;
                 }
             }
@@ -202,6 +221,7 @@ int DemoState::step(int steps) {
             hand.dragging = false;
             cloth_view = view::ClothView(simulation.cloth());
             say(why, Tone::problem);
+            if (recovery.hopeless()) pause_hopeless(recovery, "the scene");
             return s;
         }
     }
@@ -327,6 +347,9 @@ void DemoState::apply_to_all_runs(const ClothEvent& event) {
         remember(recovery, simulation);
         for (Companion& companion : companions) remember(companion.recovery, companion.simulation);
     } else if (parameters) {
+        // New parameters get as many restarts as the first ones did.
+        recovery.restarts_in_a_row = 0;
+        for (Companion& companion : companions) companion.recovery.restarts_in_a_row = 0;
         ground_height = view::ground_height_below(simulation.cloth(), simulation.colliders());
     }
     if (event.kind == ClothEvent::Kind::let_go) hand.dragging = false;

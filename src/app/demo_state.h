@@ -62,6 +62,11 @@ struct ViewSize {
 // would stall the demo without making a hopeless parameter set stable).
 inline constexpr double smallest_recovery_dt = 1e-6;  // s
 
+// Restarts in a row (with no half second of sound motion between them) after which the window
+// pauses and says what to change: parameters that no step holds would otherwise restart the
+// scene for ever.
+inline constexpr int restarts_before_pause = 3;
+
 // After a rollback dt doubles back toward the chosen one each time the run has gone this long
 // without diverging. Simulated time, not steps or wall time: deterministic in a replay, and
 // the same stretch of motion at any dt, long enough for the swing or fling that diverged to
@@ -81,12 +86,18 @@ struct Recovery {
     // settle at one that can, retried ever more rarely instead of rolled back every second.
     double growth_wait = sound_seconds_before_growth;
     bool trying_grown_dt = false;  // dt grew and has not yet held for growth_wait
+    // Restarts with no sound_seconds_before_growth of sound motion between them.
+    int restarts_in_a_row = 0;
 
     void forget() {
         last_good.reset();
         last_good_time = -1.0;
+        restarts_in_a_row = 0;
         restart_growth();
     }
+    // Whether the last restarts came one after another often enough that only other
+    // parameters can help.
+    bool hopeless() const { return restarts_in_a_row >= restarts_before_pause; }
     // dt is where it was chosen, or the cloth is new: no history of what held applies.
     void restart_growth() {
         sound_seconds = 0.0;
@@ -244,6 +255,9 @@ struct DemoState {
     void measure_frame(int steps);
 
   private:
+    // Pauses the run whose `hopeless` recovery restarted restarts_before_pause times in a
+    // row, saying so (of `run`: "the scene", "copy 2") and what to change.
+    void pause_hopeless(Recovery& hopeless, const std::string& run);
     // edit(), its refusal said as coming from `where` ("--set KEY"; "" names nothing).
     std::optional<std::string> edit(const std::vector<SceneEdit>& edits, const std::string& where);
     void perform(const ClothEvent& event);  // record it, then apply it to every run

@@ -437,6 +437,36 @@ TEST(DemoState, HopelessParametersRestartTheSceneInsteadOfStalling) {
     EXPECT_EQ(state.simulation.scene().structural.stiffness, 1e300);  // still the user's choice
 }
 
+// Restarting for ever is no answer either (1,465 divergence lines in one run): after three
+// restarts in a row the run pauses and says what to change. The window steps nothing while
+// paused; P with parameters that hold runs on.
+TEST(DemoState, HopelessParametersPauseAfterThreeRestartsInARow) {
+    DemoState state = demo();
+    ASSERT_FALSE(
+        state.change({"springs.structural.stiffness=1e300", "cloth.particle_mass=1e-300"}));
+    int restarts = 0;
+    for (int frame = 0; frame < 1000 && !state.paused; ++frame) {
+        state.step(50);
+        if (state.message.find("restarted at dt") != std::string::npos) {
+            ++restarts;
+            state.message.clear();
+        }
+    }
+    ASSERT_TRUE(state.paused);
+    EXPECT_EQ(restarts, restarts_before_pause - 1);  // the third is said with the pause
+    EXPECT_NE(state.message.find("paused: the scene restarted 3 times in a row"), std::string::npos)
+        << state.message;
+    EXPECT_NE(state.message.find("implicit Euler"), std::string::npos) << state.message;
+    EXPECT_EQ(state.message_tone, Tone::problem);
+    EXPECT_TRUE(ascii_only(state.message)) << state.message;
+
+    ASSERT_FALSE(state.change({"springs.structural.stiffness=800", "cloth.particle_mass=0.0005"}));
+    state.toggle_pause();
+    for (int frame = 0; frame < 60; ++frame) ASSERT_EQ(state.step(4), 4);
+    EXPECT_FALSE(state.paused);
+    EXPECT_TRUE(finite_state(state.simulation.cloth()));
+}
+
 TEST(DemoState, SwitchingIntegratorsEveryStepStaysSound) {
     DemoState state = demo();
     const char* names[] = {"explicit-euler", "symplectic-euler", "verlet", "velocity-verlet", "rk4",

@@ -8,9 +8,14 @@
 namespace weft::app {
 
 void colliders_section(DemoState& state) {
+    // The floor under the drawn ground (sim/floor.h), unless the scene's own ground plane is.
+    bool floor = state.simulation.scene().floor_enabled;
+    if (ImGui::Checkbox("floor (the ground stops the cloth)", &floor))
+        edit(state, {SceneKey::floor_enabled, floor});
+    refusal_below("floor.enabled");
     const std::vector<ColliderSpec>& specs = state.simulation.scene().colliders;
     if (specs.empty()) {
-        ImGui::TextDisabled("none in this scene");
+        ImGui::TextDisabled("no other collider in this scene");
         return;
     }
     for (std::size_t c = 0; c < specs.size(); ++c) {

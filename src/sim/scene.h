@@ -132,6 +132,9 @@ struct Scene {
     ForcesSpec forces;
     SolverSpec solver;
     std::vector<ColliderSpec> colliders;
+    // [floor] enabled: the ground drawn under the cloth is a floor, a plane collider with
+    // friction (floor.h), unless the scene has a ground plane of its own or says it has none.
+    bool floor_enabled = true;
     CameraSpec camera;
 
     bool operator==(const Scene&) const = default;

@@ -39,6 +39,7 @@ constexpr SceneKey all_keys[] = {
     SceneKey::collider_response,
     SceneKey::collider_restitution,
     SceneKey::collider_friction,
+    SceneKey::floor_enabled,
     SceneKey::camera_position,
     SceneKey::camera_target,
     SceneKey::camera_fov_degrees,
@@ -135,6 +136,8 @@ SceneValue value_of(const Scene& scene, SceneKey key, std::uint32_t collider) {
             return scene.colliders[collider].restitution;
         case SceneKey::collider_friction:
             return scene.colliders[collider].friction;
+        case SceneKey::floor_enabled:
+            return scene.floor_enabled;
         case SceneKey::camera_position:
             return scene.camera.position;
         case SceneKey::camera_target:
@@ -341,6 +344,9 @@ void assign(Scene& scene, const SceneEdit& edit) {
             return;
         case SceneKey::collider_friction:
             scene.colliders[edit.collider].friction = std::get<double>(value);
+            return;
+        case SceneKey::floor_enabled:
+            scene.floor_enabled = std::get<bool>(value);
             return;
         case SceneKey::camera_position:
             scene.camera.position = std::get<Vec3d>(value);

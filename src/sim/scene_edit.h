@@ -57,12 +57,13 @@ enum class SceneKey : std::uint8_t {
     collider_response,
     collider_restitution,
     collider_friction,
+    floor_enabled,
     camera_position,
     camera_target,
     camera_fov_degrees,
 };
 
-inline constexpr std::array<std::string_view, 36> scene_key_names = {
+inline constexpr std::array<std::string_view, 37> scene_key_names = {
     "cloth.rows",
     "cloth.cols",
     "cloth.spacing",
@@ -96,6 +97,7 @@ inline constexpr std::array<std::string_view, 36> scene_key_names = {
     "colliders.response",
     "colliders.restitution",
     "colliders.friction",
+    "floor.enabled",
     "camera.position",
     "camera.target",
     "camera.fov_degrees",

@@ -75,7 +75,8 @@ std::optional<SceneEdit> read_typed(TomlReader& reader, const std::string& key,
         }
         case SceneKey::structural_enabled:
         case SceneKey::shear_enabled:
-        case SceneKey::bend_enabled: {
+        case SceneKey::bend_enabled:
+        case SceneKey::floor_enabled: {
             bool enabled = false;
             if (!reader.read_bool(holder, parent, leaf, enabled)) return std::nullopt;
             edit.value = enabled;

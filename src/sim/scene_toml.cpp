@@ -291,7 +291,7 @@ SceneLoadResult load_scene_text(std::string_view toml_text, std::string_view sou
     Scene scene;
     reader.check_keys(root, "",
                       {"name", "cloth", "springs", "tearing", "strain_limit", "self_collision",
-                       "forces", "solver", "colliders", "camera"});
+                       "forces", "solver", "colliders", "floor", "camera"});
     reader.read_string(root, "", "name", scene.name);
     read_cloth(reader, root, scene);
     const std::optional<double> mesh_spacing =
@@ -313,6 +313,10 @@ SceneLoadResult load_scene_text(std::string_view toml_text, std::string_view sou
     }
     read_forces_and_solver(reader, root, scene);
     read_colliders(reader, root, scene);
+    if (const toml::table* floor = reader.sub_table(root, "", "floor")) {
+        reader.check_keys(*floor, "floor", {"enabled"});
+        reader.read_bool(*floor, "floor", "enabled", scene.floor_enabled);
+    }
     read_camera(reader, root, scene);
     if (reader.failed()) {
         result.error = reader.error();

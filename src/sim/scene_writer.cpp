@@ -134,6 +134,8 @@ std::string scene_to_toml(const Scene& scene) {
         out << "restitution = " << toml_number(collider.restitution) << "\n";
         out << "friction = " << toml_number(collider.friction) << "\n";
     }
+    // Written only when off, so a scene with the floor reads as it did before there was one.
+    if (!scene.floor_enabled) out << "\n[floor]\nenabled = false\n";
 
     out << "\n[camera]\n";
     out << "position = " << vec3(scene.camera.position) << "  # m\n";

@@ -6,6 +6,7 @@
 
 #include "sim/cloth_builder.h"
 #include "sim/divergence.h"
+#include "sim/floor.h"
 #include "sim/strain_limit.h"
 #include "sim/sweep_watch.h"
 #include "sim/tearing.h"
@@ -76,6 +77,8 @@ void Simulation::reset() {
     workspace_.resize(cloth_.particle_count(), integrator_);
     workspace_.pool = pool_.get();
     drag_ = DragHandle{};
+    // The floor goes under the cloth as it starts, and stays there through every edit.
+    floor_height_ = floor_height(cloth_, make_colliders(scene_.colliders));
     build_colliders();
     self_collision_.reset();
     divergence_guard_.forget();
@@ -333,6 +336,8 @@ void Simulation::set_strain_limit(std::optional<double> max_stretch) {
 
 void Simulation::build_colliders() {
     colliders_ = make_colliders(scene_.colliders);
+    if (scene_.floor_enabled && std::none_of(colliders_.begin(), colliders_.end(), is_ground_plane))
+        colliders_.push_back(floor_collider(floor_height_));
     has_repulsion_ = std::any_of(colliders_.begin(), colliders_.end(), [](const Collider& c) {
         return c.response == ContactResponse::repulsion;
     });
@@ -372,8 +377,9 @@ void Simulation::set_parameters(const Scene& wanted) {
         if (wanted.self_collision_thickness)
             self_collision_.emplace(*wanted.self_collision_thickness);
     }
-    if (wanted.colliders != scene_.colliders) {
+    if (wanted.colliders != scene_.colliders || wanted.floor_enabled != scene_.floor_enabled) {
         scene_.colliders = wanted.colliders;
+        scene_.floor_enabled = wanted.floor_enabled;
         build_colliders();
         workspace_.history_valid = false;
     }

@@ -95,6 +95,7 @@ class Simulation {
                             bool enabled);  // kg, every particle; pins stay pinned
     void set_tear_limit(std::optional<double> max_stretch);
     void set_strain_limit(std::optional<double> max_stretch);
+    // The scene's colliders in its order, then the floor if it has one (floor.h).
     const std::vector<Collider>& colliders() const { return colliders_; }
 
     // Whether `wanted` differs from the running scene only in what can change while the cloth
@@ -133,7 +134,8 @@ class Simulation {
     Cloth& edit_cloth();
 
   private:
-    void build_colliders();  // colliders_ and has_repulsion_ from scene_.colliders
+    // colliders_ and has_repulsion_ from scene_.colliders, and the floor at floor_height_
+    void build_colliders();
     // One step with the hand's motion as prescribed; with `judge_grip`, stops right after the
     // integrator and its corrections, reporting hand_slipped, if the grip slipped.
     StepReport take_step(bool judge_grip);
@@ -147,7 +149,8 @@ class Simulation {
     IntegratorWorkspace workspace_;
     std::shared_ptr<WorkerPool> pool_;  // shared by copies, which are never stepped at once
     DragHandle drag_;
-    std::vector<Collider> colliders_;
+    std::vector<Collider> colliders_;        // the scene's, then the floor if it has one
+    double floor_height_ = 0.0;              // m, set by reset()
     std::vector<SpringGroup> switched_off_;  // families switched off, kept with their tears
     bool has_repulsion_ = false;             // any collider with the repulsion response
     std::optional<SelfCollision> self_collision_;

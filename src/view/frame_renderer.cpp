@@ -6,6 +6,7 @@
 #include "raster/ground_grid.h"
 #include "raster/line_renderer.h"
 #include "raster/sphere.h"
+#include "sim/floor.h"
 
 namespace weft::view {
 
@@ -28,11 +29,6 @@ raster::Camera scene_camera(const Scene& scene) {
 
 namespace {
 
-// A horizontal plane facing up: the ground grid shows it.
-bool is_ground_plane(const Collider& collider) {
-    return collider.type == ColliderType::plane && collider.normal.y > 0.999;
-}
-
 // Rows per band of the frame: a band's colours and depths fit a core's L2 cache at 1280
 // wide, a cloth across part of the screen spreads over several bands, and each band's
 // own work (clearing, the grids' transform) stays small.
@@ -41,16 +37,8 @@ constexpr int frame_band_rows = 32;
 }  // namespace
 
 float ground_height_below(const Cloth& cloth, std::span<const Collider> colliders) {
-    for (const Collider& collider : colliders)
-        if (is_ground_plane(collider)) return static_cast<float>(collider.point.y);
-    // Below the lowest point the cloth starts at, and below the lowest point it can reach
-    // hanging from its pins (a cloth edge's length below the lowest pin).
-    double lowest = 0.0;
-    for (const Vec3& x : cloth.positions) lowest = std::min(lowest, x.y);
-    const double cloth_length = cloth.rest_span();  // m
-    for (std::uint32_t p : cloth.topology().pinned)
-        lowest = std::min(lowest, cloth.positions[p].y - cloth_length);
-    return static_cast<float>(lowest) - 0.1f;  // m
+    // The grid is drawn where the floor is, or would be (floor.h).
+    return static_cast<float>(floor_height(cloth, colliders));
 }
 
 void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera,

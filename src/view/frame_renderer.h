@@ -29,8 +29,8 @@ struct FrameOptions {
 // The scene's [camera] as the rasterizer's camera.
 raster::Camera scene_camera(const Scene& scene);
 
-// Where the ground grid goes: on the scene's horizontal ground plane if it has one, else
-// below the cloth, as it starts and as it can hang from its pins.
+// Where the ground grid goes: on the floor, the scene's ground plane or the one the simulation
+// adds (sim/floor.h), or where that floor would be in a scene without one.
 float ground_height_below(const Cloth& cloth, std::span<const Collider> colliders = {});
 
 // Draws the frame; spheres among `colliders` are drawn as shaded balls (planes show as the

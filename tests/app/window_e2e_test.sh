@@ -47,9 +47,10 @@ passes=0
 check() { if "$@"; then passes=$((passes + 1)); else echo "FAIL: $*"; failures=$((failures + 1)); fi; }
 
 # Starts weft in $work/$1 (further arguments go to weft), waits for its window; sets
-# $weft_pid and $window.
+# $weft_pid, $weft_name and $window.
 start_weft() {
   local name=$1
+  weft_name=$name
   shift
   mkdir -p "$work/$name"
   (cd "$work/$name" && exec "$weft" "$scene" --size 800x600 --dump "$work/$name/state.csv" "$@" >"$work/$name/out.log" 2>&1) &
@@ -58,10 +59,14 @@ start_weft() {
   [ -n "$window" ] || { echo "FAIL: no weft window appeared"; cat "$work/$name/out.log"; exit 1; }
   sleep 2.5  # the sheet settles
 }
+# Quits with Escape; weft must exit with status 0 (under ASan: no leak, no error at exit).
 quit_weft() {
   xdotool key --window "$window" Escape
   for _ in $(seq 100); do kill -0 "$weft_pid" 2>/dev/null || break; sleep 0.1; done
   wait "$weft_pid"
+  local status=$?
+  [ "$status" -eq 0 ] || { echo "weft exited with status $status:"; tail -20 "$work/$weft_name/out.log"; }
+  check test "$status" -eq 0
 }
 # The window is 800 x 600: the panel takes its left 300 px (src/app/screen_layout.cpp), the
 # view the 500 x 600 beside it, with the sheet's centre at the view's centre, window pixel

@@ -220,8 +220,8 @@ TEST(ShippedMeshes, HangAndDrapeWithoutSinkingIntoTheirColliders) {
                 deepest = std::max(deepest, -signed_distance(collider, x, normal));
             }
         EXPECT_LT(deepest, 1e-3) << name;
-        // The two with a ball lie on it (the flag flies free).
-        if (!simulation.colliders().empty()) {
+        // The two with a ball lie on it (the flag flies free, high above its floor).
+        if (!loaded.scene->colliders.empty()) {
             EXPECT_GT(contacts, 1000u) << name;
         }
         if (std::string(name) != "round_tablecloth") {

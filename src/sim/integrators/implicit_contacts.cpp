@@ -74,6 +74,16 @@ void ImplicitContacts::hold(const Cloth& cloth, std::span<const Collider> solids
     }
 }
 
+void ImplicitContacts::give_way_to_fixed(implicit_kernel::Job& job) {
+    std::erase_if(held, [&](const ContactConstraint& contact) {
+        const std::size_t i = job.pad + contact.particle;
+        if (job.free[i] != 0.0f) return false;
+        write(job.contact_normal, i, Vec3(0.0));
+        return true;
+    });
+    job.has_contacts = !held.empty();
+}
+
 std::size_t ImplicitContacts::let_go_of_pulled(implicit_kernel::Job& job) {
     const std::size_t before = held.size();
     std::erase_if(held, [&](const ContactConstraint& contact) {

@@ -58,6 +58,12 @@ struct ImplicitContacts {
     void hold(const Cloth& cloth, std::span<const Collider> solids, const Vec3& gravity, double dt,
               implicit_kernel::Job& job);
 
+    // Lets go of the particles the job fixes (job.free 0: the hand's, whose velocity it
+    // prescribes): a prescribed velocity outranks a surface, and both at once give the
+    // particle's row no consistent solution (a hand pulling the cloth into the floor gave
+    // non-finite positions). Their b and guess are the caller's.
+    void give_way_to_fixed(implicit_kernel::Job& job);
+
     // After a solve, with job.applied = A v1 unfiltered: lets go of the particles outside
     // their surface that it pulled (their normal and b restored), and returns how many.
     std::size_t let_go_of_pulled(implicit_kernel::Job& job);

@@ -190,6 +190,8 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
         job.start.y[i] = job.solution.y[i] = static_cast<float>(v.y);
         job.start.z[i] = job.solution.z[i] = static_cast<float>(v.z);
     }
+    if (!field.held.empty() && !solver.contacts.held.empty())
+        solver.contacts.give_way_to_fixed(job);
 
     const int rows = solver.rows;
     double* sums = solver.row_sums.data();

@@ -4,7 +4,7 @@
 # with libFuzzer (clang, ASan + UBSan), seeded with assets/scenes, fuzz/sessions, fuzz/obj
 # and the inputs earlier runs found (fuzz/regressions).
 #   scripts/fuzz.sh            a short run: 60 s of scenes, 30 s each of sessions and OBJ
-#                              files (what CI does)
+#                              files (CI runs scripts/fuzz.sh 40: 40 s and 20 s each)
 #   scripts/fuzz.sh 3600       a long run: an hour, and half an hour each; findings land in
 #                              ./crash-*
 # Inputs that crash, hang (> 10 s) or use more than 2 GiB fail the run.

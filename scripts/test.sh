@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The README's test command: installs what is missing, builds, and runs every test through
 # ctest. With --sanitize it does the same in a separate AddressSanitizer + UBSan build, less
-# five long runs (named in CMakePresets.json) whose code shorter tests also reach.
+# the long runs named in CMakePresets.json, whose code shorter tests also reach.
 usage="scripts/test.sh [--sanitize]"
 source "$(dirname "$0")/help_or_version.sh"
 set -euo pipefail

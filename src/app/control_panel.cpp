@@ -390,18 +390,30 @@ bool draw_control_panel(DemoState& state, const ScreenRect& area) {
 
 void draw_help_overlay(bool& open) {
     if (!open) return;
+    // A card over everything, the panel included: opaque (the cloth and the panel's text
+    // showed through it), in focus so it is drawn last, as wide as its text needs up to nine
+    // tenths of the window, its descriptions wrapped beside a key column as wide as its
+    // longest key ("Shift + W/A/S/D/Q/E" ran into its description).
     const ImVec2 size = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(0.5f * size.x, 0.5f * size.y), ImGuiCond_Always,
                             ImVec2(0.5f, 0.5f));
-    ImGui::Begin("controls", &open,
-                 ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
-    if (ImGui::BeginTable("keys", 2)) {
+    ImGui::SetNextWindowSize(ImVec2(std::min(0.9f * size.x, 46.0f * ImGui::GetFontSize()), 0.0f),
+                             ImGuiCond_Always);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(size.x, 0.9f * size.y));
+    ImGui::SetNextWindowBgAlpha(1.0f);
+    ImGui::SetNextWindowFocus();
+    ImGui::Begin(
+        "controls (H or F1 closes this)", &open,
+        ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings);
+    if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_PadOuterX)) {
+        ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed);
+        ImGui::TableSetupColumn("does", ImGuiTableColumnFlags_WidthStretch);
         for (const auto& row : controls_text) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(row[0]);
             ImGui::TableNextColumn();
-            ImGui::TextUnformatted(row[1]);
+            ImGui::TextWrapped("%s", row[1]);
         }
         ImGui::EndTable();
     }

@@ -42,7 +42,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // that a scene names on this machine) is only slow, so the fuzzer steps small ones, which
     // reach the same code within its timeout under ASan:
     // - implicit Euler solves a linear system each step and may split it into eight, so it
-    //   steps a few times on a small sheet (a 64 x 64 sheet's 20 steps took over 10 s);
+    //   steps a few times on a small sheet (a 64 x 64 sheet's twenty outlast the timeout);
     // - self-collision on a sheet crushed into a few points (a vertical sheet under the
     //   ground) tests every pair, so it steps a smaller sheet.
     const long long particles =

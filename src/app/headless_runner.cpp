@@ -111,22 +111,21 @@ raster::Framebuffer draw_runs(std::span<const Simulation* const> runs, int width
 bool write_outputs(const CommandLine& command_line, OutputFiles& files,
                    std::span<const Simulation* const> runs, float ground_height) {
     const Simulation& simulation = *runs[0];
-    if (files.dump.is_open()) {
-        write_state_csv(simulation.cloth(), files.dump);
-        files.dump.flush();
-        if (!files.dump) {
-            print_error(*command_line.dump_path, "write failed");
-            return false;
-        }
-    }
-    if (files.obj.is_open()) {
-        app::write_cloth_obj(simulation.cloth(), simulation.scene().name, files.obj);
-        files.obj.flush();
-        if (!files.obj) {
-            print_error(*command_line.obj_path, "write failed");
-            return false;
-        }
-    }
+    // Writes into `file`, if it was asked for, what `write` writes; false after saying why.
+    auto finish = [](std::ofstream& file, const std::optional<std::string>& path, auto write) {
+        if (!file.is_open()) return true;
+        write(file);
+        file.flush();
+        if (file) return true;
+        print_error(*path, "write failed");
+        return false;
+    };
+    if (!finish(files.dump, command_line.dump_path,
+                [&](std::ostream& out) { write_state_csv(simulation.cloth(), out); }) ||
+        !finish(files.obj, command_line.obj_path, [&](std::ostream& out) {
+            app::write_cloth_obj(simulation.cloth(), simulation.scene().name, out);
+        }))
+        return false;
     if (command_line.screenshot_path) {
         WorkerPool pool(default_thread_count());  // bands: the same image on any count
         const raster::Framebuffer framebuffer =

@@ -32,7 +32,10 @@ void ImplicitContacts::hold(const Cloth& cloth, std::span<const Collider> solids
     held.clear();
     const std::size_t count = cloth.particle_count();
     for (std::size_t p = 0; p < count; ++p) {
-        if (cloth.is_pinned(p)) continue;
+        // A pin or the hand fixes the particle's velocity (job.free 0): that outranks a
+        // surface, and both at once give its row no consistent solution (a hand pulling the
+        // cloth into the floor gave non-finite positions).
+        if (job.free[job.pad + p] == 0.0f) continue;
         const Vec3& x = cloth.positions[p];
         const Vec3& v = cloth.velocities[p];
         ContactConstraint best;
@@ -72,16 +75,6 @@ void ImplicitContacts::hold(const Cloth& cloth, std::span<const Collider> solids
         const Vec3 guess = read(job.solution, i);
         write(job.solution, i, guess + (contact.normal_speed - glm::dot(n, guess)) * n);
     }
-}
-
-void ImplicitContacts::give_way_to_fixed(implicit_kernel::Job& job) {
-    std::erase_if(held, [&](const ContactConstraint& contact) {
-        const std::size_t i = job.pad + contact.particle;
-        if (job.free[i] != 0.0f) return false;
-        write(job.contact_normal, i, Vec3(0.0));
-        return true;
-    });
-    job.has_contacts = !held.empty();
 }
 
 std::size_t ImplicitContacts::let_go_of_pulled(implicit_kernel::Job& job) {

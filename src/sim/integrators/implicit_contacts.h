@@ -54,15 +54,10 @@ struct ImplicitContacts {
     // Chooses the particles held this step (impulse colliders only) from the cloth's state
     // at its start, and enters them in the job: their normals, b filtered (its normal part
     // kept for the impulse), and the guess given its prescribed normal speed. The normals of
-    // the previous step's held particles are cleared first.
+    // the previous step's held particles are cleared first. Particles the job fixes (job.free
+    // 0: pinned, or in the hand) are left to what fixes them.
     void hold(const Cloth& cloth, std::span<const Collider> solids, const Vec3& gravity, double dt,
               implicit_kernel::Job& job);
-
-    // Lets go of the particles the job fixes (job.free 0: the hand's, whose velocity it
-    // prescribes): a prescribed velocity outranks a surface, and both at once give the
-    // particle's row no consistent solution (a hand pulling the cloth into the floor gave
-    // non-finite positions). Their b and guess are the caller's.
-    void give_way_to_fixed(implicit_kernel::Job& job);
 
     // After a solve, with job.applied = A v1 unfiltered: lets go of the particles outside
     // their surface that it pulled (their normal and b restored), and returns how many.

@@ -174,10 +174,6 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
         kernel_of(implicit_kernel::setup_rows_baseline, implicit_kernel::setup_rows_avx2,
                   implicit_kernel::setup_rows_avx512);
     over_rows(solver, pool, [&](int begin, int end) { setup(job, begin, end, warm_start); });
-    // Particles held on the solids' surfaces (implicit_contacts.h): before the residual
-    // pass, whose preconditioner is filtered for them.
-    if (!field.solids.empty() || !solver.contacts.held.empty())
-        solver.contacts.hold(cloth, field.solids, field.gravity, dt, job);
     // Particles in the hand (drag.h): constrained, with their velocities prescribed (Baraff &
     // Witkin's z). Filtered out like pins, but their velocity stays in the vector the solve
     // multiplies, so every free neighbour's row sees where the hand takes them.
@@ -190,8 +186,10 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
         job.start.y[i] = job.solution.y[i] = static_cast<float>(v.y);
         job.start.z[i] = job.solution.z[i] = static_cast<float>(v.z);
     }
-    if (!field.held.empty() && !solver.contacts.held.empty())
-        solver.contacts.give_way_to_fixed(job);
+    // Particles held on the solids' surfaces (implicit_contacts.h), of those the pins and the
+    // hand leave free: before the residual pass, whose preconditioner is filtered for them.
+    if (!field.solids.empty() || !solver.contacts.held.empty())
+        solver.contacts.hold(cloth, field.solids, field.gravity, dt, job);
 
     const int rows = solver.rows;
     double* sums = solver.row_sums.data();

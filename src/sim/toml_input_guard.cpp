@@ -25,6 +25,17 @@ std::optional<TextPosition> find_unsafe_non_ascii(std::string_view text) {
         return last_code == '\n' || last_code == '=' || last_code == '[' || last_code == ',' ||
                last_code == '{' || last_code == '.';
     };
+    // Where a value is read, a quote inside a bare token ("1.", "x{") is read on by the
+    // parser's number scan, which classifies each character up to a value terminator (blank,
+    // line end, , ] } #): there the quote opens no string. Keys are read segment by segment,
+    // so a quote after a dot in a key does open one.
+    bool in_key = true;           // before a line's key-value '=' outside any bracket
+    bool in_value_token = false;  // inside a run of bare characters where a value is read
+    int bracket_depth = 0;        // open [ and { in code
+    auto ends_value_token = [](char c) {
+        return is_blank(c) || c == '\n' || c == ',' || c == ']' || c == '}';
+    };
+    auto is_opener = [](char c) { return c == '=' || c == '[' || c == '{' || c == '.'; };
     auto at_token = [&](std::size_t at, std::string_view token) {
         return text.substr(at, token.size()) == token;
     };
@@ -40,15 +51,24 @@ std::optional<TextPosition> find_unsafe_non_ascii(std::string_view text) {
                     if (non_ascii) return position;
                     if (c == '#') {
                         context = Context::comment;
-                    } else if ((c == '"' || c == '\'') && opens_string()) {
+                    } else if ((c == '"' || c == '\'') && opens_string() &&
+                               (in_key || !in_value_token)) {
                         const bool triple = at_token(at, c == '"' ? "\"\"\"" : "'''");
                         if (triple) skip = 2;
                         context = c == '"'
                                       ? (triple ? Context::multiline_basic : Context::basic)
                                       : (triple ? Context::multiline_literal : Context::literal);
                         last_code = 'v';  // after a string comes no value
-                    } else if (!is_blank(c) && c != '\n') {
-                        last_code = c;
+                    } else {
+                        if (c == '[' || c == '{') ++bracket_depth;
+                        if ((c == ']' || c == '}') && bracket_depth > 0) --bracket_depth;
+                        if (ends_value_token(c) || (c == '=' && in_key)) {
+                            in_value_token = false;
+                            if (c == '=') in_key = false;
+                        } else if (!in_key && !is_opener(c)) {
+                            in_value_token = true;
+                        }
+                        if (!is_blank(c) && c != '\n') last_code = c;
                     }
                     break;
                 case Context::comment:
@@ -96,7 +116,11 @@ std::optional<TextPosition> find_unsafe_non_ascii(std::string_view text) {
             }
         }
         if (c == '\n') {
-            if (context == Context::code) last_code = '\n';
+            if (context == Context::code) {
+                last_code = '\n';
+                in_key = bracket_depth == 0;
+                in_value_token = false;
+            }
             ++position.line;
             position.column = 1;
         } else {

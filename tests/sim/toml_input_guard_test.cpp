@@ -26,6 +26,11 @@ TEST(TomlInputGuard, RefusesNonAsciiWhereTheParserWouldClassifyIt) {
     EXPECT_EQ(unsafe->column, 9);
     // A quote the parser does not take as a string start (right after a number).
     EXPECT_TRUE(find_unsafe_non_ascii("a = 0\"x\xcb\x9a\"\n").has_value());
+    // A quote inside a bare token where a value is read: the parser's number scan reads on
+    // through it to a blank, , ] } or #, on any line of an array.
+    EXPECT_TRUE(find_unsafe_non_ascii("a = 1.\"\xc3\xa9\"\n").has_value());
+    EXPECT_TRUE(find_unsafe_non_ascii("a=1{'\xc3\xa9'\n").has_value());
+    EXPECT_TRUE(find_unsafe_non_ascii("a = [\n1.=\"\xc3\xa9\"]\n").has_value());
     // The first character after a line-ending backslash in a multi-line basic string.
     EXPECT_TRUE(find_unsafe_non_ascii("s = \"\"\"\\\n\xc2\xa7\"\"\"\n").has_value());
     // The character after an escaping backslash in a multi-line basic string, and after the
@@ -43,6 +48,9 @@ TEST(TomlInputGuard, AcceptsNonAsciiInStringsAndComments) {
     EXPECT_FALSE(
         find_unsafe_non_ascii("name = 'caf\xc3\xa9'\ns = \"\"\"\n\xc2\xa7\"\"\"\n").has_value());
     EXPECT_FALSE(find_unsafe_non_ascii("a = [\"\xc3\xa9\", '\xc3\xa9']\n").has_value());
+    EXPECT_FALSE(
+        find_unsafe_non_ascii("a=[1,\n\"\xc3\xa9\"]\nb = { c = '\xc3\xa9' }\n").has_value());
+    EXPECT_FALSE(find_unsafe_non_ascii("[t.\"\xc3\xa9\"]\nx.\"\xc3\xa9\" = 1\n").has_value());
     SceneLoadResult loaded =
         load_scene_text("name = \"Drap\xc3\xa9\"  # 25\xc3\x97 stiffer\n", "t.toml");
     ASSERT_TRUE(loaded.ok()) << loaded.error->message();
@@ -50,8 +58,9 @@ TEST(TomlInputGuard, AcceptsNonAsciiInStringsAndComments) {
 }
 
 TEST(TomlInputGuard, FuzzerFindingsAreRefusedWithAPosition) {
-    for (const char* name : {"toml-unreachable-value.toml", "toml-unreachable-after-number.toml",
-                             "toml-unreachable-after-escape.toml"}) {
+    for (const char* name :
+         {"toml-unreachable-value.toml", "toml-unreachable-after-number.toml",
+          "toml-unreachable-after-escape.toml", "toml-unreachable-quote-inside-a-number.toml"}) {
         const std::string path = std::string(WEFT_SOURCE_DIR "/fuzz/regressions/") + name;
         SceneLoadResult loaded = load_scene_text(read_file(path), "fuzz.toml");
         ASSERT_FALSE(loaded.ok()) << name;

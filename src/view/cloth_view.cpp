@@ -6,6 +6,7 @@
 
 #include "raster/strain_colour.h"
 #include "view/lone_springs.h"
+#include "view/shadow_triangles.h"
 
 namespace weft::view {
 
@@ -77,6 +78,8 @@ void ClothView::rebuild_topology(const Cloth& cloth) {
     intact_triangles_.clear();
     for (const Triangle& t : cloth.topology().triangles)
         intact_triangles_.push_back({t.a, t.b, t.c});
+    find_shadow_triangles(cloth, intact_triangles_, shadow_block_cells(cloth), shadow_triangles_,
+                          shadow_vertices_);
     wireframe_edges_ = raster::unique_edges(intact_triangles_);
     raster::find_vertex_triangles(intact_triangles_, positions_.size(), triangles_around_);
     face_normals_.resize(intact_triangles_.size());
@@ -119,6 +122,10 @@ std::span<const raster::Rgba8> ClothView::particle_colours(const Cloth& cloth) {
 
 raster::MeshView ClothView::mesh() const {
     return {positions_, normals_, intact_triangles_, uvs_, {}, glm::mat4(1.0f)};
+}
+
+raster::MeshView ClothView::shadow_caster() const {
+    return {positions_, normals_, shadow_triangles_, {}, {}, glm::mat4(1.0f)};
 }
 
 std::span<const raster::Rgba8> ClothView::spring_colours(const Cloth& cloth) {

@@ -47,6 +47,14 @@ class ClothView {
     raster::PreparedMesh& prepared_mesh() { return prepared_mesh_; }
     raster::TriangleBands& triangle_bands() { return triangle_bands_; }
     std::vector<raster::PreparedMesh>& collider_meshes() { return collider_meshes_; }
+    // The cloth as its shadow is drawn from: coarser where the grid is whole
+    // (shadow_triangles.h).
+    raster::MeshView shadow_caster() const;
+    std::span<const std::uint32_t> shadow_vertices() const { return shadow_vertices_; }
+    // The cloth's and the spheres' shadows on the floor (raster/planar_shadow.h).
+    raster::PreparedMesh& shadow_mesh() { return shadow_mesh_; }
+    raster::TriangleBands& shadow_bands() { return shadow_bands_; }
+    std::vector<raster::PreparedMesh>& collider_shadows() { return collider_shadows_; }
 
   private:
     // Texture coordinates, m: a grid's from its rows and columns, a mesh's from its shape.
@@ -58,6 +66,8 @@ class ClothView {
     std::vector<glm::vec3> normals_;
     std::vector<glm::vec2> uvs_;
     std::vector<raster::TriangleIndices> intact_triangles_;
+    std::vector<raster::TriangleIndices> shadow_triangles_;  // shadow_triangles.h
+    std::vector<std::uint32_t> shadow_vertices_;             // the particles they name
     raster::VertexTriangles triangles_around_;  // of intact_triangles_, for the normals
     std::vector<glm::vec3> face_normals_;       // one per intact triangle
     std::vector<raster::LineIndices> wireframe_edges_;
@@ -69,6 +79,9 @@ class ClothView {
     raster::PreparedMesh prepared_mesh_;
     raster::TriangleBands triangle_bands_;
     std::vector<raster::PreparedMesh> collider_meshes_;
+    raster::PreparedMesh shadow_mesh_;
+    raster::TriangleBands shadow_bands_;
+    std::vector<raster::PreparedMesh> collider_shadows_;
 };
 
 }  // namespace weft::view

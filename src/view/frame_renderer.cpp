@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <atomic>
+#include <optional>
 
 #include "raster/ground_grid.h"
 #include "raster/line_renderer.h"
+#include "raster/planar_shadow.h"
 #include "raster/sphere.h"
 #include "sim/floor.h"
 
@@ -78,6 +80,32 @@ void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera
                 ++sphere_count;
         }
     }
+    // Shadows on the ground from the key light: the cloth and the spheres flattened onto the
+    // floor, drawn first, a few millimetres below it so that the grid's lines and anything
+    // resting on the floor stay in front of them.
+    constexpr float shadow_below_ground = 0.003f;  // m
+    const std::optional<glm::mat4> onto_ground =
+        options.shaded && options.ground && options.shadows
+            ? raster::shadow_projection(lighting.direction_to_light,
+                                        ground_height - shadow_below_ground)
+            : std::nullopt;
+    raster::PreparedMesh& cloth_shadow = view.shadow_mesh();
+    std::vector<raster::PreparedMesh>& sphere_shadows = view.collider_shadows();
+    if (onto_ground) {
+        if (cloth_drawn) {
+            raster::MeshView flattened = view.shadow_caster();
+            flattened.model = *onto_ground * flattened.model;
+            raster::prepare_flat_mesh(camera, framebuffer.width(), framebuffer.height(), flattened,
+                                      cloth_shadow, pool, view.shadow_vertices());
+        }
+        if (sphere_shadows.size() < sphere_count) sphere_shadows.resize(sphere_count);
+        for (std::size_t k = 0; k < sphere_count; ++k) {
+            raster::MeshView flattened = spheres[k].mesh;
+            flattened.model = *onto_ground * flattened.model;
+            raster::prepare_flat_mesh(camera, framebuffer.width(), framebuffer.height(), flattened,
+                                      sphere_shadows[k]);
+        }
+    }
     std::span<const raster::Rgba8> spring_colours, particle_colours;
     if (options.strain_springs) spring_colours = view.spring_colours(cloth);
     if (options.particles) particle_colours = view.particle_colours(cloth);
@@ -92,10 +120,20 @@ void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera
     const int band_count = (height + frame_band_rows - 1) / frame_band_rows;
     raster::TriangleBands& cloth_bands = view.triangle_bands();
     if (cloth_drawn) raster::bin_triangles(cloth_mesh, frame_band_rows, cloth_bands, pool);
+    raster::TriangleBands& shadow_bands = view.shadow_bands();
+    if (onto_ground && cloth_drawn)
+        raster::bin_triangles(cloth_shadow, frame_band_rows, shadow_bands, pool);
     auto draw_band = [&](int band) {
         const raster::PixelRect rect{0, band * frame_band_rows, width,
                                      std::min((band + 1) * frame_band_rows, height)};
         framebuffer.clear(options.background, raster::Framebuffer::far_depth, rect);
+        if (onto_ground) {
+            for (std::size_t k = 0; k < sphere_count; ++k)
+                raster::draw_flat_mesh(framebuffer, sphere_shadows[k], options.shadow_colour, rect);
+            if (cloth_drawn)
+                raster::draw_flat_band(framebuffer, cloth_shadow, shadow_bands, band,
+                                       options.shadow_colour);
+        }
         raster::LineStyle lines;
         lines.scissor = rect;
         if (options.ground) {

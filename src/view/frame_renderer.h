@@ -1,5 +1,6 @@
-// One frame of weft: clear, ground grid, shaded cloth, optional wireframe / strain-coloured
-// springs / particles. The headless screenshot and the window draw through this same code.
+// One frame of weft: clear, shadows, ground grid, shaded cloth, optional wireframe /
+// strain-coloured springs / particles. The headless screenshot and the window draw through this
+// same code.
 #pragma once
 
 #include "raster/camera.h"
@@ -18,10 +19,13 @@ struct FrameOptions {
     bool strain_springs = false;  // every spring as a line coloured by its strain
     bool particles = false;       // particles as points, pinned ones highlighted
     bool ground = true;           // the ground grid
+    bool shadows = true;          // the cloth's and spheres' shadows on the ground, from the key
+                                  // light (drawn only with the ground)
     raster::SurfaceStyle surface = default_surface();
     raster::Lighting lighting;
     bool light_over_shoulder = true;  // overrides lighting.direction_to_light to follow the camera
     raster::Rgba8 background{28, 30, 36, 255};
+    raster::Rgba8 shadow_colour{16, 17, 21, 255};  // the background in shadow
 
     static raster::SurfaceStyle default_surface();
 };

@@ -42,6 +42,9 @@ TEST(FrameRenderer, BandsOnSeveralThreadsDrawTheSameImageAsOneThread) {
             ASSERT_GT(std::count_if(one.depths.begin(), one.depths.end(),
                                     [](float depth) { return depth < 1.0f; }),
                       width * height / 10);  // the cloth and the ball fill part of the frame
+            // The ball and the cloth cast a shadow on the floor (drawn in every band).
+            EXPECT_GT(std::count(one.colours.begin(), one.colours.end(), options.shadow_colour),
+                      width * height / 50);
             for (int threads : {2, 3, 4}) {
                 WorkerPool pool(threads);
                 const Frame banded = draw(simulation, options, width, height, &pool);

@@ -1,0 +1,85 @@
+// The demo's frame, drawn as the window draws it: render_frame at 1280x720 through the
+// scene's camera, on the shipped cotton-like sheets after half a second of falling (the
+// sheet spread over the floor's view, its shadow under it). Each case draws the same cloth
+// over and over; the arguments are the sheet's particles per side, shadows off or on, and
+// threads.
+//
+//   build/release/bench/frame/weft_frame_bench --benchmark_repetitions=5
+//       --benchmark_report_aggregates_only=true      (on one line)
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "parallel/worker_pool.h"
+#include "raster/framebuffer.h"
+#include "sim/scene_loader.h"
+#include "sim/simulation.h"
+#include "view/cloth_view.h"
+#include "view/frame_renderer.h"
+
+namespace {
+
+using namespace weft;
+
+constexpr double settle_seconds = 0.5;  // s of simulated fall before the frame is drawn
+
+// The shipped sheet of this size, stepped for settle_seconds; built once per size.
+const Simulation& settled_sheet(int particles_per_side) {
+    static std::map<int, std::unique_ptr<Simulation>> sheets;
+    auto found = sheets.find(particles_per_side);
+    if (found != sheets.end()) return *found->second;
+    const std::string path = std::string(WEFT_SOURCE_DIR "/assets/scenes/cloth_") +
+                             std::to_string(particles_per_side) + ".toml";
+    SceneLoadResult loaded = load_scene_file(path);
+    if (!loaded.ok()) {
+        std::fprintf(stderr, "%s\n", loaded.error->message().c_str());
+        std::exit(2);
+    }
+    auto simulation = std::make_unique<Simulation>(*loaded.scene);
+    const auto steps = static_cast<int>(settle_seconds / loaded.scene->solver.dt + 0.5);
+    for (int step = 0; step < steps; ++step) simulation->step();
+    return *sheets.emplace(particles_per_side, std::move(simulation)).first->second;
+}
+
+void draw_frame(benchmark::State& state) {
+    const auto particles_per_side = static_cast<int>(state.range(0));
+    const bool shadows = state.range(1) != 0;
+    const auto threads = static_cast<int>(state.range(2));
+    const Simulation& simulation = settled_sheet(particles_per_side);
+    SceneLoadResult loaded = load_scene_file(std::string(WEFT_SOURCE_DIR "/assets/scenes/cloth_") +
+                                             std::to_string(particles_per_side) + ".toml");
+    const raster::Camera camera = view::scene_camera(*loaded.scene);
+    WorkerPool pool(threads);
+    raster::Framebuffer framebuffer(1280, 720);
+    view::ClothView cloth_view(simulation.cloth());
+    view::FrameOptions options;
+    options.shadows = shadows;
+    const float ground = view::ground_height_below(simulation.cloth(), simulation.colliders());
+    for (auto _ : state) {
+        view::render_frame(framebuffer, camera, simulation.cloth(), cloth_view, options, ground,
+                           simulation.colliders(), &pool);
+        benchmark::DoNotOptimize(framebuffer.colours().data());
+    }
+    state.SetLabel(std::to_string(particles_per_side) + "² sheet, shadows " +
+                   (shadows ? "on" : "off") + ", " + std::to_string(threads) + " thread(s)");
+}
+
+BENCHMARK(draw_frame)
+    ->ArgNames({"side", "shadows", "threads"})
+    ->ArgsProduct({{128, 256}, {0, 1}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->ComputeStatistics("min",
+                        [](const std::vector<double>& v) {
+                            return *std::min_element(v.begin(), v.end());
+                        })
+    ->ComputeStatistics("max", [](const std::vector<double>& v) {
+        return *std::max_element(v.begin(), v.end());
+    });
+
+}  // namespace
+
+BENCHMARK_MAIN();

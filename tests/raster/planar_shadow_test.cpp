@@ -1,0 +1,123 @@
+// Planar shadows (raster/planar_shadow.h): the projection puts every point on the floor along
+// the light, and the drawn shadow of a square is the square moved along the light onto the
+// floor, drawn flat.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "raster/planar_shadow.h"
+
+namespace weft::raster {
+namespace {
+
+TEST(PlanarShadow, EveryPointLandsOnTheFloorAlongTheLight) {
+    for (const glm::vec3 light : {glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.36f, 0.8f, 0.48f),
+                                  glm::vec3(-2.0f, 1.0f, 0.5f)}) {
+        const float floor = -0.7f;
+        const auto projection = shadow_projection(light, floor);
+        ASSERT_TRUE(projection.has_value());
+        for (const glm::vec3 point : {glm::vec3(0.3f, 1.2f, -0.4f), glm::vec3(-1.0f, -0.7f, 2.0f),
+                                      glm::vec3(2.0f, -1.5f, 0.0f)}) {
+            const glm::vec3 shadow = glm::vec3(*projection * glm::vec4(point, 1.0f));
+            EXPECT_NEAR(shadow.y, floor, 1e-5f);
+            // Moved along the light: the move is parallel to it.
+            const glm::vec3 moved = point - shadow;
+            EXPECT_NEAR(glm::length(glm::cross(moved, glm::normalize(light))), 0.0f, 1e-5f);
+        }
+    }
+}
+
+TEST(PlanarShadow, NoShadowFromALightAtTheHorizonOrBelowIt) {
+    EXPECT_FALSE(shadow_projection({1.0f, 0.1f, 0.0f}, 0.0f).has_value());
+    EXPECT_FALSE(shadow_projection({0.0f, -1.0f, 0.0f}, 0.0f).has_value());
+    EXPECT_FALSE(shadow_projection({0.0f, 0.0f, 0.0f}, 0.0f).has_value());
+    EXPECT_FALSE(shadow_projection({NAN, 1.0f, 0.0f}, 0.0f).has_value());
+    EXPECT_TRUE(shadow_projection({1.0f, 0.2f, 0.0f}, 0.0f).has_value());
+}
+
+// A 1 m square at height `y`, centred on (x, z).
+std::vector<glm::vec3> square_at(float x, float y, float z) {
+    return {{x - 0.5f, y, z - 0.5f},
+            {x + 0.5f, y, z - 0.5f},
+            {x + 0.5f, y, z + 0.5f},
+            {x - 0.5f, y, z + 0.5f}};
+}
+
+struct Coverage {
+    int pixels = 0;
+    double x = 0.0, y = 0.0;  // centroid, px
+};
+
+Coverage coverage(const Framebuffer& framebuffer, Rgba8 colour) {
+    Coverage c;
+    for (int y = 0; y < framebuffer.height(); ++y)
+        for (int x = 0; x < framebuffer.width(); ++x)
+            if (framebuffer.colour(x, y) == colour) {
+                ++c.pixels;
+                c.x += x;
+                c.y += y;
+            }
+    if (c.pixels > 0) {
+        c.x /= c.pixels;
+        c.y /= c.pixels;
+    }
+    return c;
+}
+
+TEST(PlanarShadow, ASquaresShadowIsTheSquareMovedAlongTheLightOntoTheFloor) {
+    const Camera camera = make_camera({0.0f, 6.0f, 0.01f}, {0.0f, 0.0f, 0.0f}, 50.0f);
+    const std::vector<TriangleIndices> triangles{{0, 1, 2}, {0, 2, 3}};
+    const Rgba8 dark{10, 20, 30, 255};
+    const glm::vec3 light{1.0f, 2.0f, -0.5f};  // the shadow moves 0.5 m along -x, 0.25 m along z
+    const std::vector<glm::vec3> square = square_at(0.2f, 1.0f, 0.1f);
+    const std::vector<glm::vec3> moved = square_at(0.2f - 0.5f, 0.0f, 0.1f + 0.25f);
+    const std::vector<glm::vec3> normals(4, glm::vec3(0.0f, 1.0f, 0.0f));
+
+    Framebuffer shadow(320, 240), reference(320, 240);
+    shadow.clear({0, 0, 0, 255});
+    reference.clear({0, 0, 0, 255});
+    MeshView caster{square, normals, triangles};
+    caster.model = *shadow_projection(light, 0.0f);
+    PreparedMesh prepared;
+    prepare_flat_mesh(camera, 320, 240, caster, prepared);
+    draw_flat_mesh(shadow, prepared, dark);
+    prepare_flat_mesh(camera, 320, 240, MeshView{moved, normals, triangles}, prepared);
+    draw_flat_mesh(reference, prepared, dark);
+
+    const Coverage cast = coverage(shadow, dark), expected = coverage(reference, dark);
+    ASSERT_GT(expected.pixels, 1000);
+    // The same square up to rounding along its edges (about 4 × 40 px of them).
+    EXPECT_NEAR(cast.pixels, expected.pixels, 40);
+    EXPECT_NEAR(cast.x, expected.x, 0.5);
+    EXPECT_NEAR(cast.y, expected.y, 0.5);
+}
+
+TEST(PlanarShadow, OverlappingLayersDrawOneColourNotADarkerOne) {
+    // Two squares, one above the other: their shadows overlap; every covered pixel holds the
+    // shadow's colour, never anything darker.
+    const Camera camera = make_camera({0.0f, 6.0f, 0.01f}, {0.0f, 0.0f, 0.0f}, 50.0f);
+    std::vector<glm::vec3> layers = square_at(0.0f, 1.0f, 0.0f);
+    for (const glm::vec3& corner : square_at(0.3f, 1.5f, 0.0f)) layers.push_back(corner);
+    const std::vector<TriangleIndices> triangles{{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}};
+    const std::vector<glm::vec3> normals(8, glm::vec3(0.0f, 1.0f, 0.0f));
+    MeshView caster{layers, normals, triangles};
+    caster.model = *shadow_projection({0.0f, 1.0f, 0.0f}, 0.0f);
+    PreparedMesh prepared;
+    prepare_flat_mesh(camera, 320, 240, caster, prepared);
+    Framebuffer framebuffer(320, 240);
+    const Rgba8 background{40, 40, 40, 255}, dark{10, 10, 10, 255};
+    framebuffer.clear(background);
+    draw_flat_mesh(framebuffer, prepared, dark);
+    int shadowed = 0;
+    for (const Rgba8& pixel : framebuffer.colours()) {
+        EXPECT_TRUE(pixel == background || pixel == dark);
+        shadowed += pixel == dark;
+    }
+    EXPECT_GT(shadowed, 1000);
+}
+
+}  // namespace
+}  // namespace weft::raster

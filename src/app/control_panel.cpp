@@ -40,8 +40,10 @@ const char* const controls_text[][2] = {
     {"R", "reset the scene"},
     {"F12", "screenshot of the view (weft-screenshot-NNNN.png, never overwritten)"},
     {"Shift+F12", "screenshot of the whole window, panel included"},
+    {"F9", "start / stop capturing frames, 30 a simulated second (weft-frames-NNNN/)"},
     {"O", "the cloth as a mesh (weft-cloth-NNNN.obj: for Blender, or a scene's cloth.mesh)"},
     {"F5", "start recording the session (restarts the scene) / stop and save it"},
+    {"", "all of these go to ~/weft-captures, or $WEFT_CAPTURES when set"},
     {"H or F1", "this help"},
     {"Esc", "quit"},
 };
@@ -299,6 +301,8 @@ void view_toggles(DemoState& state) {
     ImGui::Checkbox("wireframe", &o.wireframe);
     ImGui::SameLine();
     ImGui::Checkbox("ground", &o.ground);
+    ImGui::SameLine();
+    ImGui::Checkbox("shadows", &o.shadows);
     ImGui::Checkbox("springs by strain", &o.strain_springs);
     ImGui::SameLine();
     ImGui::Checkbox("particles", &o.particles);
@@ -362,11 +366,17 @@ bool draw_control_panel(DemoState& state, const ScreenRect& area) {
     ImGui::PushStyleColor(ImGuiCol_SliderGrab, grab);
     // The scene's name, and under it pause, step and reset, each labelled with its key: at
     // the top, where no section's height can push them out of sight.
+    // The scene picker and the help key come right after them, above the fold of any window.
     ImGui::TextUnformatted(state.simulation.scene().name.c_str());
+    ImGui::SameLine();
+    ImGui::TextDisabled("  H: help");
     run_buttons(state);
+    scenes(state);
     statistics_section(state);
+    // Only the solver is open at first: the materials' sliders would push everything else
+    // below the fold.
     if (ImGui::CollapsingHeader("solver", ImGuiTreeNodeFlags_DefaultOpen)) solver(state);
-    if (ImGui::CollapsingHeader("materials", ImGuiTreeNodeFlags_DefaultOpen)) materials(state);
+    if (ImGui::CollapsingHeader("materials")) materials(state);
     // A mesh's shape is its OBJ file's: there is no grid to rebuild.
     if (state.simulation.scene().cloth.mesh.empty() &&
         ImGui::CollapsingHeader("grid (rebuilt on apply)"))
@@ -377,9 +387,7 @@ bool draw_control_panel(DemoState& state, const ScreenRect& area) {
     if (ImGui::CollapsingHeader("side by side")) comparison(state);
     if (ImGui::CollapsingHeader("record and replay")) session(state);
     if (ImGui::CollapsingHeader("view")) view_toggles(state);
-    if (ImGui::CollapsingHeader("scenes", ImGuiTreeNodeFlags_DefaultOpen)) scenes(state);
     if (ImGui::CollapsingHeader("save scene")) save(state);
-    ImGui::TextDisabled("H: help");
     ImGui::PopStyleColor();
     ImGui::PopStyleVar();
     ImGui::PopTextWrapPos();

@@ -365,6 +365,7 @@ bool DemoState::grab(const glm::vec2& cursor, ViewSize view, int run_index) {
     event.hit = *hit;
     event.radius = drag_radius;
     perform(event);
+    hand_hint = false;
     hand.dragging = simulation.drag().active();
     hand.anchor = hit->point;
     return hand.dragging;
@@ -387,6 +388,7 @@ void DemoState::let_go() {
 
 void DemoState::start_cut(const glm::vec2& cursor, ViewSize view, int run_index) {
     hand.cutting = true;
+    hand_hint = false;
     hand.last_cursor = cursor;
     hand.last_on_screen =
         particles_on_screen(run(run_index).cloth(), rig.camera(), view.width, view.height);
@@ -425,6 +427,7 @@ bool DemoState::toggle_pin(const glm::vec2& cursor, ViewSize view, int run_index
         target.cloth().is_pinned(hit->particle) ? ClothEvent::Kind::unpin : ClothEvent::Kind::pin;
     event.particle = hit->particle;
     perform(event);
+    hand_hint = false;
     return true;
 }
 

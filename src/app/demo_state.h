@@ -14,6 +14,7 @@
 
 #include "app/camera_rig.h"
 #include "app/cloth_event.h"
+#include "app/frame_capture.h"
 #include "app/frame_plots.h"
 #include "app/hand_tools.h"
 #include "app/session_record.h"
@@ -147,12 +148,17 @@ struct DemoState {
     bool paused = false;
     bool single_step = false;  // paused, one step is owed to the next frame
     bool show_help = false;
+    // The one-line hint on the view (how to pull, cut, pin), shown until the hand is first
+    // used: a grab, a cut or a pin.
+    bool hand_hint = true;
     double drag_radius = 0.08;  // m
 
     // Steps run since the scene (re)started, diverged ones included: the clock events are
     // recorded and replayed by.
     std::uint64_t steps_run = 0;
-    std::optional<SessionRecord> recording;  // while recording
+    std::optional<SessionRecord> recording;     // while recording
+    std::optional<FrameCapture> frame_capture;  // while capturing frames (F9)
+    std::string captures;  // the folder screenshots, OBJ files, sessions and frames go to
     std::optional<SessionRecord> replaying;  // while replaying; events are consumed in order
     std::size_t replay_next = 0;             // the next event of `replaying` to apply
 

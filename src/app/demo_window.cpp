@@ -17,6 +17,7 @@
 
 #include "app/atomic_file.h"
 #include "app/camera_framing.h"
+#include "app/captures_folder.h"
 #include "app/control_panel.h"
 #include "app/demo_state.h"
 #include "app/hand_tools.h"
@@ -97,6 +98,15 @@ WindowLayout layout_of(const Window& w) {
                           ImGui::GetFrameHeight());
 }
 
+// The captures folder (captures_folder.h), made if it is not there yet; empty, after saying
+// why, if it cannot be.
+std::string captures_or_say(DemoState& state) {
+    std::string error;
+    if (make_captures_folder(state.captures, error)) return state.captures;
+    state.say(error, Tone::problem);
+    return {};
+}
+
 // The window as shown, panel included (Shift+F12).
 void save_window_screenshot(DemoState& state, Window& w) {
     int width = 0, height = 0;
@@ -109,7 +119,9 @@ void save_window_screenshot(DemoState& state, Window& w) {
         state.say(std::string("window screenshot failed: ") + SDL_GetError(), Tone::problem);
         return;
     }
-    const std::string path = next_screenshot_path(".");
+    const std::string folder = captures_or_say(state);
+    if (folder.empty()) return;
+    const std::string path = next_screenshot_path(folder);
     std::string error;
     if (raster::write_png(shot, path, &error)) {
         std::printf("screenshot: %s\n", path.c_str());
@@ -135,7 +147,9 @@ bool over_panel(const Window& w) {
 }
 
 void save_screenshot(DemoState& state, const Window& w) {
-    const std::string path = next_screenshot_path(".");
+    const std::string folder = captures_or_say(state);
+    if (folder.empty()) return;
+    const std::string path = next_screenshot_path(folder);
     std::string error;
     if (raster::write_png(w.framebuffer, path, &error)) {
         std::printf("screenshot: %s\n", path.c_str());
@@ -176,7 +190,9 @@ void toggle_recording(DemoState& state) {
         return;
     }
     const SessionRecord record = state.stop_recording();
-    const std::string path = next_free_path(".", "weft-session", "toml");
+    const std::string folder = captures_or_say(state);
+    if (folder.empty()) return;
+    const std::string path = next_free_path(folder, "weft-session", "toml");
     std::string error;
     if (write_file_atomically(path, session_to_toml(record), false, error))
         state.say("saved the session (" +
@@ -190,7 +206,9 @@ void toggle_recording(DemoState& state) {
 
 // O: the cloth as it is now, as Wavefront OBJ beside the screenshots (obj_export.h).
 void save_cloth_obj(DemoState& state) {
-    const std::string path = next_free_path(".", "weft-cloth", "obj");
+    const std::string folder = captures_or_say(state);
+    if (folder.empty()) return;
+    const std::string path = next_free_path(folder, "weft-cloth", "obj");
     std::ostringstream text;
     write_cloth_obj(state.simulation.cloth(), state.simulation.scene().name, text);
     std::string error;
@@ -198,6 +216,31 @@ void save_cloth_obj(DemoState& state) {
         state.say("saved the cloth as a mesh to " + path, Tone::success);
     else
         state.say("could not save the cloth: " + error, Tone::problem);
+}
+
+// F9: starts a frame capture into a new folder of the captures folder, or stops the one
+// running and says where its frames are and how to make a video of them.
+void toggle_frame_capture(DemoState& state) {
+    if (state.frame_capture) {
+        const FrameCapture& capture = *state.frame_capture;
+        state.say("saved " +
+                      counted(static_cast<long long>(capture.frames_written()), "frame", "frames") +
+                      " to " + capture.folder() + "; scripts/make-video.sh " + capture.folder() +
+                      " weft.mp4",
+                  Tone::success);
+        state.frame_capture.reset();
+        return;
+    }
+    const std::string captures = captures_or_say(state);
+    if (captures.empty()) return;
+    const std::string folder = next_free_folder(captures, "weft-frames");
+    std::string error;
+    if (!make_captures_folder(folder, error)) {
+        state.say(error, Tone::problem);
+        return;
+    }
+    state.frame_capture.emplace(folder, state.simulation.time());
+    state.say("capturing frames to " + folder + " (F9 stops)", Tone::info);
 }
 
 // Returns false when the user quits.
@@ -227,6 +270,9 @@ bool handle_event(const SDL_Event& event, DemoState& state, Window& w) {
                 break;
             case SDLK_o:
                 save_cloth_obj(state);
+                break;
+            case SDLK_F9:
+                toggle_frame_capture(state);
                 break;
             case SDLK_h:
             case SDLK_F1:
@@ -449,6 +495,7 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
         return exit_bad_input;
     }
     DemoState state(path, command_line.overrides, *scene);
+    state.captures = captures_folder();
     for (const CommandLine::Comparison& comparison : command_line.comparisons)
         state.add_companion(*integrator_from_name(comparison.integrator),
                             comparison.dt > 0.0 ? comparison.dt : scene->solver.dt);
@@ -542,6 +589,7 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
         w.panel_folded = !draw_control_panel(state, w.layout.panel);
         draw_help_overlay(state.show_help);
         draw_status_overlay(state, now, w.layout.view);
+        draw_hand_hint(state, w.layout.view);
         draw_run_labels(state, w);
         ImGui::Render();
 
@@ -551,6 +599,14 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
         SDL_RenderClear(w.renderer);
         const double raster_start = now_seconds();
         present_frame(state, w);
+        if (state.frame_capture) {
+            std::string error;
+            if (!state.frame_capture->write_due(w.framebuffer, state.simulation.time(),
+                                                state.simulation.dt(), error)) {
+                state.say("frame capture stopped: " + error, Tone::problem);
+                state.frame_capture.reset();
+            }
+        }
         stats.raster_seconds = now_seconds() - raster_start;
         state.measure_frame(steps);
         ImGui_ImplSDLRenderer_RenderDrawData(ImGui::GetDrawData());

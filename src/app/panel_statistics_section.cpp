@@ -8,15 +8,14 @@
 namespace weft::app {
 namespace {
 
-// One plot with `overlay` (its latest value) written over it, the panel's full width (the
-// label column would cut the overlay short); before the first sample, only the text.
-void plot(const char* id, const PlotHistory& history, const char* overlay) {
-    if (history.empty()) {
-        ImGui::TextUnformatted(overlay);
-        return;
-    }
+// One plot under its label (the latest value), the panel's full width (the label column
+// would cut a long label short). The label sits above the curve, never over it; before the
+// first sample there is only the label.
+void plot(const char* id, const PlotHistory& history, const char* label) {
+    ImGui::TextUnformatted(label);
+    if (history.empty()) return;
     ImGui::PlotLines(id, history.samples().data(), static_cast<int>(history.samples().size()), 0,
-                     overlay, FLT_MAX, FLT_MAX, ImVec2(ImGui::GetContentRegionAvail().x, 40));
+                     nullptr, FLT_MAX, FLT_MAX, ImVec2(ImGui::GetContentRegionAvail().x, 28));
 }
 
 }  // namespace
@@ -37,20 +36,21 @@ void statistics_section(DemoState& state) {
     if (auto solve = linear_solve_text(state.simulation)) ImGui::TextUnformatted(solve->c_str());
     // The plots gain a sample for each frame that stepped, so they hold still while paused.
     const FramePlots& plots = s.plots;
-    char overlay[192];
+    char label[192];
     if (!plots.energy.empty()) {  // measured only on frames that step
-        std::snprintf(overlay, sizeof overlay, "energy %.4g J", plots.energy.latest());
-        plot("##energy", plots.energy, overlay);
+        std::snprintf(label, sizeof label, "energy %.4g J", plots.energy.latest());
+        plot("##energy", plots.energy, label);
     }
     // The stretch is measured every frame, so a cut while paused shows at once.
-    // Where that spring is goes on the plot's second line: the panel's rows stay put.
-    std::snprintf(overlay, sizeof overlay, "%s%s%s", stretch_text(s.stretch_ratio).c_str(),
-                  s.stretch_place.empty() ? "" : "\n", s.stretch_place.c_str());
-    plot("##stretch", plots.stretch_percent, overlay);
+    // Where that spring is goes on the label's second line: the panel's rows stay put.
+    // Two lines always (the second blank when there is no place to name).
+    std::snprintf(label, sizeof label, "%s\n%s", stretch_text(s.stretch_ratio).c_str(),
+                  s.stretch_place.c_str());
+    plot("##stretch", plots.stretch_percent, label);
     if (!plots.frame_milliseconds.empty()) {
-        std::snprintf(overlay, sizeof overlay, "%.2f ms a frame stepping + drawing",
+        std::snprintf(label, sizeof label, "%.2f ms a frame stepping + drawing",
                       plots.frame_milliseconds.latest());
-        plot("##frame_ms", plots.frame_milliseconds, overlay);
+        plot("##frame_ms", plots.frame_milliseconds, label);
     }
     if (state.recovery.recoveries > 0)
         ImGui::TextColored(ImVec4(1, 0.6f, 0.2f, 1), "recovered from divergence %s",

@@ -9,6 +9,9 @@ namespace weft::app {
 std::string next_free_path(const std::string& directory, const std::string& prefix,
                            const std::string& extension);
 
+// The first of DIRECTORY/PREFIX-0001, -0002, ... that does not exist yet: a new folder's name.
+std::string next_free_folder(const std::string& directory, const std::string& prefix);
+
 // next_free_path(directory, "weft-screenshot", "png").
 std::string next_screenshot_path(const std::string& directory);
 

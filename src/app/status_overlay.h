@@ -11,4 +11,8 @@ namespace weft::app {
 
 void draw_status_overlay(const DemoState& state, double now_seconds, const ScreenRect& area);
 
+// The one-line hint at the top of the view, "space or left-drag: pull, right-drag: cut,
+// T: pin, H: help", until the hand is first used (DemoState::hand_hint).
+void draw_hand_hint(const DemoState& state, const ScreenRect& area);
+
 }  // namespace weft::app

@@ -40,7 +40,12 @@ std::string stretch_place_text(const Cloth& cloth, const Spring& spring) {
     if (spring.i >= count || spring.j >= count) return {};
     const bool i_pinned = cloth.is_pinned(spring.i), j_pinned = cloth.is_pinned(spring.j);
     const std::uint32_t free_end = i_pinned ? spring.j : spring.i;
-    return "at " + particle_name(cloth, free_end) + (i_pinned || j_pinned ? ", beside a pin" : "");
+    // "particle" goes without saying under "most stretched spring", and the line must fit
+    // the narrowest panel without wrapping (the rows under it would move).
+    std::string name = particle_name(cloth, free_end);
+    constexpr std::string_view particle = "particle ";
+    if (name.starts_with(particle)) name.erase(0, particle.size());
+    return "at " + name + (i_pinned || j_pinned ? ", by a pin" : "");
 }
 
 std::string ascii_text(std::string_view utf8) {

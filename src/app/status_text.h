@@ -29,8 +29,8 @@ std::optional<std::string> linear_solve_text(const Simulation& simulation);
 // "largest stretch 37.6 %" at rest left a newcomer wondering what was stretched, and over
 // what.
 std::string stretch_text(double largest_stretch_ratio);
-// Where that spring is, for the line under it: "at particle (row 1, col 0), beside a pin"
-// (on a mesh "at vertex 12"), naming its end that is free to move. At rest the most
+// Where that spring is, for the line under it: "at (row 1, col 0), by a pin" (on a mesh
+// "at vertex 12"), naming its end that is free to move. At rest the most
 // stretched springs are the ones holding the sheet up: next to its pins.
 std::string stretch_place_text(const Cloth& cloth, const Spring& spring);
 

@@ -47,10 +47,10 @@ TEST(StatusText, TheMostStretchedSpringOfAHangingSheetIsSaidToBeBesideAPin) {
     const Cloth& cloth = simulation.cloth();
     const EnergyAndStretch measures = measure_energy_and_stretch(cloth, simulation.force_field());
     const std::string place = stretch_place_text(cloth, measures.most_stretched);
-    EXPECT_NE(place.find(", beside a pin"), std::string::npos) << place;
-    EXPECT_EQ(place.rfind("at particle (row ", 0), 0u) << place;
+    EXPECT_NE(place.find(", by a pin"), std::string::npos) << place;
+    EXPECT_EQ(place.rfind("at (row ", 0), 0u) << place;
     // A spring between two free particles has no pin beside it; its first end is named.
-    EXPECT_EQ(stretch_place_text(cloth, Spring{13, 14, 0.05}), "at particle (row 1, col 1)");
+    EXPECT_EQ(stretch_place_text(cloth, Spring{13, 14, 0.05}), "at (row 1, col 1)");
     // Indices the cloth does not have say nothing rather than something wrong.
     EXPECT_EQ(stretch_place_text(cloth, Spring{1000, 1, 0.05}), "");
 }

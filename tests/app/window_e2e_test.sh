@@ -16,7 +16,9 @@
 #   8. the panel's pause and step buttons pause and step the run, and its plots (energy,
 #      largest stretch, ms per frame) hold still while paused;
 #   9. a 2048 x 2048 grid applied in the panel is refused, said whole under Apply at the
-#      panel's foot, and the sheet runs on as it was.
+#      panel's foot, and the sheet runs on as it was;
+#  10. the hint on the view shows until the first pull, F9 captures frames into the captures
+#      folder, and nothing is written into the folder weft was started from.
 # Usage: window_e2e_test.sh WEFT PNG_DIFF SOURCE_DIR PNG_COLOUR_COUNT
 set -uo pipefail
 weft=$(realpath "$1")
@@ -46,14 +48,15 @@ failures=0
 passes=0
 check() { if "$@"; then passes=$((passes + 1)); else echo "FAIL: $*"; failures=$((failures + 1)); fi; }
 
-# Starts weft in $work/$1 (further arguments go to weft), waits for its window; sets
-# $weft_pid, $weft_name and $window.
+# Starts weft in $work/$1 (further arguments go to weft), its captures folder (screenshots,
+# sessions, frames) $work/$1/captures, waits for its window; sets $weft_pid, $weft_name and
+# $window.
 start_weft() {
   local name=$1
   weft_name=$name
   shift
   mkdir -p "$work/$name"
-  (cd "$work/$name" && exec "$weft" "$scene" --size 800x600 --dump "$work/$name/state.csv" "$@" >"$work/$name/out.log" 2>&1) &
+  (cd "$work/$name" && WEFT_CAPTURES="$work/$name/captures" exec "$weft" "$scene" --size 800x600 --dump "$work/$name/state.csv" "$@" >"$work/$name/out.log" 2>&1) &
   weft_pid=$!
   window=$(timeout 20 xdotool search --sync --name "weft - e2e sheet" | head -1)
   [ -n "$window" ] || { echo "FAIL: no weft window appeared"; cat "$work/$name/out.log"; exit 1; }
@@ -93,7 +96,7 @@ xdotool key --window "$window" F12
 sleep 0.5
 xdotool key --window "$window" c      # back to the scene's camera before quitting
 quit_weft
-shots=("$work"/rest/weft-screenshot-*.png)
+shots=("$work"/rest/captures/weft-screenshot-*.png)
 check test "${#shots[@]}" -eq 3
 wheeled=$("$png_diff" "${shots[0]}" "${shots[1]}")
 echo "the wheel over the panel changed $wheeled of the view's pixels"
@@ -152,7 +155,7 @@ sleep 0.5
 xdotool keyup --window "$window" space
 sleep 0.5
 quit_weft
-shots=("$work"/side/weft-screenshot-*.png)
+shots=("$work"/side/captures/weft-screenshot-*.png)
 check test "${#shots[@]}" -eq 2
 left=$("$png_diff" "${shots[0]}" "${shots[1]}" 0 250)
 right=$("$png_diff" "${shots[0]}" "${shots[1]}" 250 500)
@@ -206,7 +209,7 @@ recording_red="255 64 64"
 shoot_window() {
   xdotool key --window "$window" shift+F12
   sleep 0.5
-  window_shot=$(ls "$work/$1"/weft-screenshot-*.png | tail -1)
+  window_shot=$(ls "$work/$1"/captures/weft-screenshot-*.png | tail -1)
 }
 # pixels IMAGE "R G B" X0 X1: pixels of that colour in those columns of rows 480 to 600.
 pixels() { "$png_colour_count" "$1" $2 "$3" "$4" 480 600; }
@@ -252,28 +255,33 @@ check test "$rec" -gt 20
 # At each size the issue names, the view's screenshot (F12) is as wide as the window less the
 # panel (300 px at 800, 30 % = 384 px at 1280), and the window's screenshot (Shift+F12) shows
 # it whole right of the panel: every pixel of the cloth is seen, none is under the panel.
+# The top and bottom 60 rows are left out: the hint on the view (section 10) and the status
+# lines (the screenshot's "saved ..." message) are drawn there.
 png_width() { od -An -tu1 -j16 -N4 "$1" | awk '{ print $1 * 16777216 + $2 * 65536 + $3 * 256 + $4 }'; }
 for size in 800x600:300 1280x720:384; do
   window_width=${size%%x*}
   panel_width=${size##*:}
+  window_height=${size%%:*}
+  window_height=${window_height#*x}
   name=fit-${size%%:*}
   start_weft "$name" --size "${size%%:*}"
   xdotool key --window "$window" F12
   sleep 0.5
-  view_shot=$(ls "$work/$name"/weft-screenshot-*.png | tail -1)
+  view_shot=$(ls "$work/$name"/captures/weft-screenshot-*.png | tail -1)
   shoot_window "$name"
   quit_weft
   view_width=$(png_width "$view_shot")
-  shown=$("$png_diff" "$view_shot" "$window_shot" 0 "$view_width" "$panel_width")
+  shown=$("$png_diff" "$view_shot" "$window_shot" 0 "$view_width" "$panel_width" 60 $((window_height - 60)))
   echo "${size%%:*}: the view is $view_width px wide beside a $panel_width px panel; $shown of it differs from the window's pixels there"
   check test "$view_width" -eq $((window_width - panel_width))
   check awk -v f="$shown" 'BEGIN { exit !(f < 0.05) }'
 done
 
 # --- 7. a refused edit is said under its control ---------------------------------------------
-# Ctrl+click on the structural stiffness slider (the panel's first stiffness, at y = 380,
-# below the statistics and their three plots) types a value; -5 is refused. The refusal must
-# be said right under the slider (rows 388 to 428), whole, inside the panel, and stay there
+# "materials" opens (its header at y = 390, under the statistics, their three plots and the
+# solver); Ctrl+click on the structural stiffness slider (its first stiffness, at y = 430)
+# types a value; -5 is refused. The refusal must
+# be said right under the slider (rows 438 to 478), whole, inside the panel, and stay there
 # (issue 18, item 3: it sat at the panel's foot, cut off, out of sight) until the next edit,
 # 700, which is taken.
 refusal_red="255 102 102"
@@ -296,16 +304,24 @@ type_into_slider() {
   hold key Return
   sleep 0.5
 }
-refusal_pixels() { "$png_colour_count" "$window_shot" $refusal_red "$1" "$2" 388 428; }
+refusal_pixels() { "$png_colour_count" "$window_shot" $refusal_red "$1" "$2" 438 478; }
+click_at() {
+  xdotool mousemove --window "$window" "$1" "$2"
+  sleep 0.2
+  hold mouse 1
+  sleep 0.3
+}
 start_weft refuse
-type_into_slider 60 380 -5
+xdotool windowfocus --sync "$window"
+click_at 100 390   # open "materials"
+type_into_slider 60 430 -5
 shoot_window refuse
 under_slider=$(refusal_pixels 0 $panel_right)
 beyond_panel=$(refusal_pixels $panel_right 800)
 sleep 3
 shoot_window refuse
 later=$(refusal_pixels 0 $panel_right)
-type_into_slider 60 380 700
+type_into_slider 60 430 700
 shoot_window refuse
 after_next_edit=$(refusal_pixels 0 800)
 echo "refused -5: $under_slider refusal-red pixels under the slider, $beyond_panel beyond the panel; 3 s later $later; after the next edit $after_next_edit"
@@ -315,17 +331,12 @@ check test "$later" -eq "$under_slider"
 check test "$after_next_edit" -eq 0
 
 # --- 8. pause and step buttons; the plots hold still while paused ----------------------------
-# In the same window. The three plots fill the panel's rows 112 to 238; a frame that steps
+# In the same window. The three plots and their labels fill the panel's rows 135 to 292; a
+# frame that steps
 # adds a sample to each (the ms-per-frame one is never flat), so they move while running,
 # hold still while paused (issue 18: the energy plot scrolled), and move once for one step.
 # The buttons sit at the panel's top: pause at (42, 50), step at (117, 50).
-click_at() {
-  xdotool mousemove --window "$window" "$1" "$2"
-  sleep 0.2
-  hold mouse 1
-  sleep 0.3
-}
-plots_changed() { "$png_diff" "$1" "$2" 8 280 8 112 238; }
+plots_changed() { "$png_diff" "$1" "$2" 8 280 8 135 292; }
 shoot_window refuse; running_a=$window_shot
 shoot_window refuse; running_b=$window_shot
 click_at 42 50   # pause (P)
@@ -345,10 +356,10 @@ check awk -v f="$one_step" 'BEGIN { exit !(f > 0.001) }'
 
 # --- 9. a grid the window cannot step is refused, and said whole -----------------------------
 # Issue 18: the panel built a 2048 x 2048 grid (about 10 s and 1.7 GB, the window frozen).
-# It is refused before anything is built (src/app/grid_edit.h). With "materials" folded
-# (its header at y = 339) the grid section opens under its header (y = 362): rows at
-# y = 385, cols at y = 408, and with 2048 x 2048 typed (the limit's warning wrapping to two
-# lines) Apply at y = 570, so close to the window's foot that its refusal, five lines in
+# It is refused before anything is built (src/app/grid_edit.h). With "solver" folded (its
+# header at y = 304) the grid section opens under its header (y = 350): rows at y = 373,
+# cols at y = 396, and with 2048 x 2048 typed (the limit's warning wrapping to two lines)
+# Apply at y = 558, so close to the window's foot that its refusal, five lines in
 # the 300 px panel, would be cut off after its first: the panel must scroll it whole into
 # sight. Then a dump of the running sheet when the window closes still holds its 16 x 16
 # particles.
@@ -364,16 +375,16 @@ type_into_field() {
 }
 start_weft grid
 xdotool windowfocus --sync "$window"
-click_at 100 339   # fold "materials"
-click_at 100 362   # open "grid (rebuilt on apply)"
-type_into_field 50 385 2048
-type_into_field 50 408 2048
-click_at 100 570   # apply
+click_at 100 304   # fold "solver"
+click_at 100 350   # open "grid (rebuilt on apply)"
+type_into_field 50 373 2048
+type_into_field 50 396 2048
+click_at 100 558   # apply
 xdotool mousemove --window "$window" 550 300
 sleep 0.3
-shots_before=$(ls "$work/grid"/weft-screenshot-*.png 2>/dev/null | wc -l)
+shots_before=$(ls "$work/grid"/captures/weft-screenshot-*.png 2>/dev/null | wc -l)
 shoot_window grid
-shots_after=$(ls "$work/grid"/weft-screenshot-*.png | wc -l)
+shots_after=$(ls "$work/grid"/captures/weft-screenshot-*.png | wc -l)
 quit_weft
 refusal_lines=$("$png_colour_count" --lines "$window_shot" $refusal_red 0 $panel_right)
 refusal_beyond=$("$png_colour_count" "$window_shot" $refusal_red $panel_right 800)
@@ -383,6 +394,35 @@ check test "$shots_after" -eq $((shots_before + 1))   # the window still answers
 check test "$refusal_lines" -eq 5
 check test "$refusal_beyond" -eq 0
 check test "$particles" -eq 256
+
+# --- 10. the hint on the view; frames out (F9); nothing in the working folder ---------------
+# Until the hand is first used, a line at the top of the view says how (white text, rows 8 to
+# 45 beside the panel); a pull takes it away. F9 starts and stops a capture: one PNG of the
+# view (500 x 600) per 1/30 s of simulated time, in a new folder of the captures folder.
+hint_pixels() { "$png_colour_count" "$window_shot" 255 255 255 $panel_right 800 8 45; }
+start_weft hint
+shoot_window hint
+hint_before=$(hint_pixels)
+xdotool key --window "$window" F9
+sleep 1.5
+xdotool key --window "$window" F9
+xdotool mousemove --window "$window" 540 390
+sleep 0.2
+xdotool keydown --window "$window" space
+for step in $(seq 1 5); do xdotool mousemove --window "$window" $((540 + 20 * step)) 390; sleep 0.05; done
+xdotool keyup --window "$window" space
+sleep 0.5
+shoot_window hint
+hint_after=$(hint_pixels)
+quit_weft
+frames=("$work"/hint/captures/weft-frames-0001/frame-*.png)
+in_working_folders=$(ls "$work"/*/*.png 2>/dev/null | wc -l)
+echo "hint: $hint_before white pixels before the first pull, $hint_after after; F9 for 1.5 s: ${#frames[@]} frames, $(png_width "${frames[0]}") px wide; $in_working_folders PNG files in the working folders"
+check test "$hint_before" -gt 200
+check test "$hint_after" -eq 0
+check test "${#frames[@]}" -ge 10
+check test "$(png_width "${frames[0]}")" -eq 500
+check test "$in_working_folders" -eq 0
 
 echo "$passes passed, $failures failed"
 [ "$failures" -eq 0 ]

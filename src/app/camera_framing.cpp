@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
+#include <vector>
 
 #include "raster/camera.h"
 
@@ -17,6 +19,46 @@ Box bounding_box(std::span<const Vec3> positions) {
         high = glm::max(high, x);
     }
     return {glm::vec3(low), glm::vec3(high)};
+}
+
+namespace {
+
+// The root of p's piece, halving the path on the way (union-find).
+std::uint32_t piece_root(std::vector<std::uint32_t>& parent, std::uint32_t p) {
+    while (parent[p] != p) {
+        parent[p] = parent[parent[p]];
+        p = parent[p];
+    }
+    return p;
+}
+
+}  // namespace
+
+Box largest_piece_box(const Cloth& cloth) {
+    const std::size_t count = cloth.positions.size();
+    std::vector<std::uint32_t> parent(count);
+    for (std::size_t p = 0; p < count; ++p) parent[p] = static_cast<std::uint32_t>(p);
+    for (const SpringGroup& group : cloth.topology().spring_groups)
+        for (const Spring& spring : group.springs) {
+            if (spring.i >= count || spring.j >= count) continue;
+            const std::uint32_t a = piece_root(parent, spring.i), b = piece_root(parent, spring.j);
+            if (a != b) parent[std::max(a, b)] = std::min(a, b);
+        }
+    std::vector<std::uint32_t> size(count, 0);
+    std::uint32_t largest = 0;
+    for (std::size_t p = 0; p < count; ++p) {
+        const std::uint32_t root = piece_root(parent, static_cast<std::uint32_t>(p));
+        if (++size[root] > size[largest] || (size[root] == size[largest] && root < largest))
+            largest = root;
+    }
+    std::vector<Vec3> piece;
+    for (std::size_t p = 0; p < count; ++p) {
+        const Vec3& x = cloth.positions[p];
+        if (piece_root(parent, static_cast<std::uint32_t>(p)) == largest && std::isfinite(x.x) &&
+            std::isfinite(x.y) && std::isfinite(x.z))
+            piece.push_back(x);
+    }
+    return bounding_box(piece);
 }
 
 CameraRig framed(const CameraRig& rig, const Box& box, float aspect, float margin) {

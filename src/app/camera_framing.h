@@ -23,6 +23,12 @@ struct Box {
 // The box around `positions` (empty: a point at the origin).
 Box bounding_box(std::span<const Vec3> positions);
 
+// The box around the cloth's largest piece: the particles that springs still join, the most
+// of them (the first such piece on a tie). A whole cloth is one piece; after a cut or a tear
+// it is the sheet, not a scrap that fell away, that Home frames. Particles not at a finite
+// position are left out (a point at the origin if none is).
+Box largest_piece_box(const Cloth& cloth);
+
 // Share of the view's half-width and half-height left empty around the framed box: 10 %.
 inline constexpr float frame_margin = 0.1f;
 

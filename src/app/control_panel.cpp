@@ -29,7 +29,7 @@ const char* const controls_text[][2] = {
     {"Q / E", "move down / up"},
     {"arrow keys", "orbit around the point looked at"},
     {"mouse wheel", "zoom toward / away from the point looked at"},
-    {"Home / C", "frame the cloth / the scene's camera"},
+    {"Home / C", "frame the cloth (its largest piece) / the scene's camera"},
     {"space + mouse", "pull the cloth (grab where the cursor is)"},
     {"left mouse drag", "pull the cloth"},
     {"right mouse drag", "cut the springs the cursor crosses"},

@@ -279,11 +279,11 @@ bool handle_event(const SDL_Event& event, DemoState& state, Window& w) {
                 state.show_help = !state.show_help;
                 break;
             case SDLK_HOME: {
-                // Frames the cloth as it is now, seen from the scene camera's direction.
+                // Frames the cloth's largest piece as it is now, seen from the scene camera's
+                // direction.
                 const ViewSize view = columns_of(state, w).view();
-                state.rig =
-                    framed(state.initial_rig, bounding_box(state.simulation.cloth().positions),
-                           float(view.width) / float(view.height));
+                state.rig = framed(state.initial_rig, largest_piece_box(state.simulation.cloth()),
+                                   float(view.width) / float(view.height));
                 break;
             }
             case SDLK_c:

@@ -10,6 +10,7 @@
 
 #include "app/camera_framing.h"
 #include "raster/camera.h"
+#include "sim/cloth_builder.h"
 
 namespace weft::app {
 namespace {
@@ -80,6 +81,39 @@ TEST(CameraFraming, BoundingBoxHoldsEveryParticle) {
     EXPECT_EQ(box.high, glm::vec3(3.0f, 1.0f, 0.5f));
     const Box empty = bounding_box({});
     EXPECT_EQ(empty.low, empty.high);
+}
+
+// Home after a cut: the box is the larger piece's, not one around a scrap that fell away.
+TEST(CameraFraming, TheLargestPieceIsFramedNotAScrapThatFellAway) {
+    Scene scene;
+    scene.cloth.rows = 10;
+    scene.cloth.cols = 10;
+    scene.shear.enabled = scene.bend.enabled = true;
+    Cloth cloth = build_cloth(scene);
+    const Box whole = bounding_box(cloth.positions);
+    const Box one_piece = largest_piece_box(cloth);
+    EXPECT_EQ(one_piece.low, whole.low);
+    EXPECT_EQ(one_piece.high, whole.high);
+    // Cut every spring between columns 0-2 and 3-9, and drop the three columns 50 m.
+    auto column = [&](std::uint32_t p) { return static_cast<int>(p) % cloth.cols; };
+    for (SpringGroup& group : cloth.edit_topology().spring_groups)
+        std::erase_if(group.springs,
+                      [&](const Spring& s) { return (column(s.i) <= 2) != (column(s.j) <= 2); });
+    Vec3 low_of_rest(1e9), high_of_rest(-1e9);
+    for (std::uint32_t p = 0; p < cloth.positions.size(); ++p) {
+        if (column(p) <= 2) {
+            cloth.positions[p].y -= 50.0;
+        } else {
+            low_of_rest = glm::min(low_of_rest, cloth.positions[p]);
+            high_of_rest = glm::max(high_of_rest, cloth.positions[p]);
+        }
+    }
+    const Box piece = largest_piece_box(cloth);
+    EXPECT_EQ(piece.low, glm::vec3(low_of_rest));
+    EXPECT_EQ(piece.high, glm::vec3(high_of_rest));
+    // A particle at no finite position is left out.
+    cloth.positions[99] = Vec3(std::nan(""), 0.0, 0.0);
+    EXPECT_TRUE(std::isfinite(largest_piece_box(cloth).low.x));
 }
 
 }  // namespace

@@ -28,3 +28,15 @@ done
   --screenshot "$out/torn-sheet.png" >/dev/null
 "$weft" --headless --replay assets/sessions/tear.toml --compare rk4 --size 1280x540 \
   --screenshot "$out/side-by-side.png" >/dev/null
+# The animation at the README's top: a recorded drag that tears the sheet, one frame per
+# 1/15 s, made into a GIF by scripts/make-video.sh (with ffmpeg; skipped without it, which
+# that script would install).
+if command -v ffmpeg >/dev/null; then
+  frames=$(mktemp -d)
+  "$weft" --headless --replay assets/sessions/drag-and-tear.toml --frames "$frames" --fps 15 \
+    --size 480x270 >/dev/null
+  scripts/make-video.sh "$frames" "$out/drag-and-tear.gif" 15 >/dev/null
+  rm -rf "$frames"
+else
+  echo "readme-images.sh: skipped drag-and-tear.gif: ffmpeg is missing (scripts/make-video.sh installs it)"
+fi

@@ -148,11 +148,7 @@ std::variant<CommandLine, CommandLineError> parse_command_line(
         if (line.record_path) return CommandLineError{"--record", "cannot record a replay"};
     }
     if (line.headless) {
-        if (line.replay_path) {
-            if (line.frames_dir)
-                return CommandLineError{"--frames", "runs with a scene and --steps, not --replay"};
-            return line;
-        }
+        if (line.replay_path) return line;
         if (!line.steps) return CommandLineError{"--headless", "needs --steps N"};
         if (line.record_path) return CommandLineError{"--record", "only applies in the window"};
     } else {

@@ -216,25 +216,40 @@ class FrameWriter {
     // Writes every frame due by the main run's time, the copies caught up first; false (after
     // saying why) if one cannot be written.
     bool write_due(const Simulation& main, std::vector<Copy>& copies) {
-        while (static_cast<double>(next_) / frames_per_second_ <= main.time() + 0.5 * main.dt()) {
+        while (due(main)) {
             catch_up(copies, main.time());
-            const std::vector<const Simulation*> runs = runs_of(main, copies);
-            const raster::Framebuffer frame =
-                draw_runs(runs, width_, height_, ground_height_, pool_);
-            char name[32];
-            std::snprintf(name, sizeof name, "frame-%05llu.png", next_);
-            const std::string path = (std::filesystem::path(directory_) / name).string();
-            std::string error;
-            if (!raster::write_png(frame, path, &error)) {
-                print_error(path, error);
-                return false;
-            }
-            ++next_;
+            if (!write(runs_of(main, copies))) return false;
         }
         return true;
     }
 
+    // The same for a replay, whose copies step with the main run (runs[0]).
+    bool write_due(const std::vector<const Simulation*>& runs) {
+        while (due(*runs[0]))
+            if (!write(runs)) return false;
+        return true;
+    }
+
   private:
+    bool due(const Simulation& main) const {
+        return static_cast<double>(next_) / frames_per_second_ <= main.time() + 0.5 * main.dt();
+    }
+
+    // The next frame: the runs side by side.
+    bool write(const std::vector<const Simulation*>& runs) {
+        const raster::Framebuffer frame = draw_runs(runs, width_, height_, ground_height_, pool_);
+        char name[32];
+        std::snprintf(name, sizeof name, "frame-%05llu.png", next_);
+        const std::string path = (std::filesystem::path(directory_) / name).string();
+        std::string error;
+        if (!raster::write_png(frame, path, &error)) {
+            print_error(path, error);
+            return false;
+        }
+        ++next_;
+        return true;
+    }
+
     std::string directory_;
     int frames_per_second_;
     int width_, height_;
@@ -299,7 +314,21 @@ int run_headless_replay(const CommandLine& command_line) {
         state.add_companion(*integrator_from_name(comparison.integrator),
                             comparison.dt > 0.0 ? comparison.dt : scene.scene->solver.dt);
     state.start_replay(*record);
-    while (!state.replay_finished()) state.step(4096);
+    std::optional<FrameWriter> frames;
+    auto runs_now = [&] {
+        std::vector<const Simulation*> runs;
+        for (int run = 0; run < state.run_count(); ++run) runs.push_back(&state.run(run));
+        return runs;
+    };
+    if (command_line.frames_dir) {
+        frames.emplace(command_line, state.ground_height);
+        if (!frames->open() || !frames->write_due(runs_now())) return exit_bad_input;
+    }
+    // With frames, a step at a time so that each is drawn at its own time.
+    while (!state.replay_finished()) {
+        state.step(frames ? 1 : 4096);
+        if (frames && !frames->write_due(runs_now())) return exit_bad_input;
+    }
     const bool matches = state.replay_matches();
     std::printf(
         "replayed %s and %s of %s: final state hash %016llx %s\n",
@@ -307,9 +336,7 @@ int run_headless_replay(const CommandLine& command_line) {
         app::counted(static_cast<long long>(record->events.size()), "event", "events").c_str(),
         path.c_str(), static_cast<unsigned long long>(hash_state(state.simulation.cloth())),
         matches ? "matches the recording" : "DIFFERS from the recording");
-    std::vector<const Simulation*> runs;
-    for (int run = 0; run < state.run_count(); ++run) runs.push_back(&state.run(run));
-    if (!write_outputs(command_line, files, runs,
+    if (!write_outputs(command_line, files, runs_now(),
                        final_ground_height(state.simulation, state.ground_height)))
         return exit_bad_input;
     return matches ? exit_ok : exit_replay_differs;

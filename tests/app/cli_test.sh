@@ -147,6 +147,13 @@ check "--frames: the sheet moves from frame to frame" \
 expect 0 quiet -- --headless "$scenes/hanging_sheet.toml" --steps 400 --frames "$work/frames60" \
   --fps 60 --size 64x36
 check "--frames --fps 60: seven frames" test "$(ls "$work/frames60" | wc -l)" -eq 7
+# A replay's frames: the shipped drag that tears, 4800 steps of 1 ms, at 15 a second is frames
+# 0 to 72, the last the same picture as the replay's screenshot at the end.
+expect 0 quiet -- --headless --replay "$scenes/../sessions/drag-and-tear.toml" \
+  --frames "$work/replayed-frames" --fps 15 --size 64x36 --screenshot "$work/replayed-end.png"
+check "--replay --frames: 73 frames" test "$(ls "$work/replayed-frames" | wc -l)" -eq 73
+check "--replay --frames: the last frame is the end" \
+  cmp -s "$work/replayed-frames/frame-00072.png" "$work/replayed-end.png"
 expect 2 '^error: --fps: only applies with --frames' -- --headless "$scenes/hanging_sheet.toml" \
   --steps 1 --fps 60
 expect 2 '^error: --fps: expects a whole number' -- --headless "$scenes/hanging_sheet.toml" \

@@ -171,6 +171,7 @@ const char* usage_text() {
            "       [--obj CLOTH.obj] [--frames DIR [--fps N]]\n"
            "       [--screenshot IMAGE.png [--size WxH] [--compare METHOD[=DT]]...]\n"
            "  weft --headless --replay SESSION.toml [--dump STATE.csv] [--obj CLOTH.obj]\n"
+           "       [--frames DIR [--fps N]]\n"
            "       [--screenshot IMAGE.png [--size WxH] [--compare METHOD[=DT]]...]\n"
            "  weft --help | --version\n"
            "\n"

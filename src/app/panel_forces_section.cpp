@@ -34,6 +34,10 @@ void forces_section(DemoState& state) {
         edit(state, {SceneKey::wind, wind});
     }
     refusal_below("forces.wind");
+    double gust = f.gust;
+    if (slider("gusts (share of the wind)", gust, 0.0, 1.0, "%.2f"))
+        edit(state, {SceneKey::gust, gust});
+    refusal_below("forces.gust");
 }
 
 }  // namespace weft::app

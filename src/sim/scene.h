@@ -88,6 +88,9 @@ struct ForcesSpec {
     Vec3d gravity = {0.0, -9.81, 0.0};  // m/s²
     double air_drag = 0.0;              // N·s/m per particle: f = -air_drag (v - wind)
     Vec3d wind = {0.0, 0.0, 0.0};       // m/s
+    // Gusts: the wind's speed varies by up to this share of it, and it veers by up to half that
+    // share, in time, smoothly and the same on every run (gusts.h). 0: a steady wind.
+    double gust = 0.0;  // 0..1
 
     bool operator==(const ForcesSpec&) const = default;
 };

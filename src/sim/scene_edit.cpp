@@ -30,6 +30,7 @@ constexpr SceneKey all_keys[] = {
     SceneKey::gravity,
     SceneKey::air_drag,
     SceneKey::wind,
+    SceneKey::gust,
     SceneKey::integrator,
     SceneKey::dt,
     SceneKey::collider_center,
@@ -118,6 +119,8 @@ SceneValue value_of(const Scene& scene, SceneKey key, std::uint32_t collider) {
             return scene.forces.air_drag;
         case SceneKey::wind:
             return scene.forces.wind;
+        case SceneKey::gust:
+            return scene.forces.gust;
         case SceneKey::integrator:
             return scene.solver.integrator;
         case SceneKey::dt:
@@ -216,6 +219,9 @@ std::optional<std::string> edit_problem(const Scene& scene, const SceneEdit& edi
                 break;
             case SceneKey::air_drag:
                 rule = scene_rules::air_drag;
+                break;
+            case SceneKey::gust:
+                rule = scene_rules::gust;
                 break;
             case SceneKey::dt:
                 rule = scene_rules::dt;
@@ -317,6 +323,9 @@ void assign(Scene& scene, const SceneEdit& edit) {
             return;
         case SceneKey::wind:
             scene.forces.wind = std::get<Vec3d>(value);
+            return;
+        case SceneKey::gust:
+            scene.forces.gust = std::get<double>(value);
             return;
         case SceneKey::integrator:
             scene.solver.integrator = std::get<Integrator>(value);

@@ -48,6 +48,7 @@ enum class SceneKey : std::uint8_t {
     gravity,
     air_drag,
     wind,
+    gust,
     integrator,
     dt,
     collider_center,  // of the collider at SceneEdit::collider
@@ -63,7 +64,7 @@ enum class SceneKey : std::uint8_t {
     camera_fov_degrees,
 };
 
-inline constexpr std::array<std::string_view, 37> scene_key_names = {
+inline constexpr std::array<std::string_view, 38> scene_key_names = {
     "cloth.rows",
     "cloth.cols",
     "cloth.spacing",
@@ -88,6 +89,7 @@ inline constexpr std::array<std::string_view, 37> scene_key_names = {
     "forces.gravity",
     "forces.air_drag",
     "forces.wind",
+    "forces.gust",
     "solver.integrator",
     "solver.dt",
     "colliders.center",

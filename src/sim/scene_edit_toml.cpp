@@ -100,6 +100,7 @@ std::optional<SceneEdit> read_typed(TomlReader& reader, const std::string& key,
         case SceneKey::bend_stiffness:
         case SceneKey::bend_damping:
         case SceneKey::air_drag:
+        case SceneKey::gust:
         case SceneKey::dt:
         case SceneKey::collider_radius:
         case SceneKey::collider_restitution:

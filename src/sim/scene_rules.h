@@ -38,6 +38,7 @@ inline constexpr NumberRule tear_max_stretch{1.0, true, std::nullopt};
 inline constexpr NumberRule strain_limit_max_stretch = positive;
 inline constexpr NumberRule self_collision_thickness = positive;  // m
 inline constexpr NumberRule air_drag = non_negative;              // N·s/m
+inline constexpr NumberRule gust{0.0, false, 1.0};                // share of the wind
 inline constexpr NumberRule dt = positive;                        // s
 inline constexpr NumberRule collider_radius = positive;           // m
 inline constexpr NumberRule restitution{0.0, false, 1.0};

@@ -163,11 +163,12 @@ void read_optional_feature(TomlReader& reader, const toml::table& root, std::str
 
 void read_forces_and_solver(TomlReader& reader, const toml::table& root, Scene& scene) {
     if (const toml::table* forces = reader.sub_table(root, "", "forces")) {
-        reader.check_keys(*forces, "forces", {"gravity", "air_drag", "wind"});
+        reader.check_keys(*forces, "forces", {"gravity", "air_drag", "wind", "gust"});
         reader.read_vec3(*forces, "forces", "gravity", scene.forces.gravity);
         reader.read_number(*forces, "forces", "air_drag", scene.forces.air_drag,
                            scene_rules::air_drag);
         reader.read_vec3(*forces, "forces", "wind", scene.forces.wind);
+        reader.read_number(*forces, "forces", "gust", scene.forces.gust, scene_rules::gust);
     }
     if (const toml::table* solver = reader.sub_table(root, "", "solver")) {
         reader.check_keys(*solver, "solver", {"integrator", "dt"});

@@ -116,6 +116,8 @@ std::string scene_to_toml(const Scene& scene) {
     out << "gravity = " << vec3(scene.forces.gravity) << "  # m/s²\n";
     out << "air_drag = " << toml_number(scene.forces.air_drag) << "  # N·s/m per particle\n";
     out << "wind = " << vec3(scene.forces.wind) << "  # m/s\n";
+    if (scene.forces.gust != 0.0)
+        out << "gust = " << toml_number(scene.forces.gust) << "  # share of the wind\n";
 
     out << "\n[solver]\n";
     out << "integrator = \"" << integrator_name(scene.solver.integrator) << "\"\n";

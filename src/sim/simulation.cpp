@@ -7,6 +7,7 @@
 #include "sim/cloth_builder.h"
 #include "sim/divergence.h"
 #include "sim/floor.h"
+#include "sim/gusts.h"
 #include "sim/strain_limit.h"
 #include "sim/sweep_watch.h"
 #include "sim/tearing.h"
@@ -124,6 +125,9 @@ StepReport Simulation::take_step(bool judge_grip) {
     const bool held = drag_.active();
     if (held) start_hand_motion(drag_, cloth_, dt_);
     field_.held = drag_.particles;
+    // Gusts: the wind of this step's start (gusts.h), held through the step.
+    if (scene_.forces.gust > 0.0)
+        field_.wind = to_vec3(gusty_wind(scene_.forces.wind, scene_.forces.gust, time_));
     field_.colliders =
         has_repulsion_ ? std::span<const Collider>(colliders_) : std::span<const Collider>();
     field_.solids = colliders_;
@@ -303,7 +307,9 @@ void Simulation::set_family_enabled(SpringFamily family, bool enabled) {
 
 void Simulation::set_force_field(const Vec3d& gravity, double air_drag, const Vec3d& wind) {
     energy_guard_.forget();  // the energy is measured against other terms now
-    scene_.forces = {gravity, air_drag, wind};
+    scene_.forces.gravity = gravity;
+    scene_.forces.air_drag = air_drag;
+    scene_.forces.wind = wind;
     field_.gravity = to_vec3(gravity);
     field_.air_drag = air_drag;
     field_.wind = to_vec3(wind);
@@ -367,8 +373,10 @@ void Simulation::set_parameters(const Scene& wanted) {
     }
     if (wanted.cloth.particle_mass != scene_.cloth.particle_mass)
         set_particle_mass(wanted.cloth.particle_mass);
-    if (!(wanted.forces == scene_.forces))
+    if (!(wanted.forces == scene_.forces)) {
         set_force_field(wanted.forces.gravity, wanted.forces.air_drag, wanted.forces.wind);
+        scene_.forces.gust = wanted.forces.gust;
+    }
     set_tear_limit(wanted.tear_max_stretch);
     set_strain_limit(wanted.strain_limit_max_stretch);
     if (wanted.self_collision_thickness != scene_.self_collision_thickness) {

@@ -2,7 +2,8 @@
 # Redraws the README's headless images (docs/images) with the commands the README gives for
 # them, into OUT_DIR (default docs/images), with WEFT (default build/release/src/app/weft).
 # The window's own screenshots (demo-window.png at 1280x720, demo-window-800x600.png) are
-# taken by hand in the window (Shift+F12 under Xvfb, default scene, about 5 s in).
+# taken by hand in the window (Shift+F12 under Xvfb, default scene, about 5 s in; the
+# 800x600 one with the help card open, H).
 # tests/readme_images_test.sh runs it into a scratch folder and compares.
 usage="scripts/readme-images.sh [OUT_DIR]"
 source "$(dirname "$0")/help_or_version.sh"

@@ -2,13 +2,14 @@
 // scene's camera, on the shipped cotton-like sheets after half a second of falling (the
 // sheet spread over the floor's view, its shadow under it). Each case draws the same cloth
 // over and over; the arguments are the sheet's particles per side, shadows off or on, and
-// threads.
+// threads. shadow_share draws each frame both ways in turn and reports what shadows add.
 //
 //   build/release/bench/frame/weft_frame_bench --benchmark_repetitions=5
 //       --benchmark_report_aggregates_only=true      (on one line)
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -67,6 +68,46 @@ void draw_frame(benchmark::State& state) {
     state.SetLabel(std::to_string(particles_per_side) + "² sheet, shadows " +
                    (shadows ? "on" : "off") + ", " + std::to_string(threads) + " thread(s)");
 }
+
+// What the shadows add to a frame, frame by frame: each iteration draws the frame without
+// shadows and then with them, so the machine's drift (large on a shared host) falls on both
+// alike. Counters: the mean of each, ms, and the shadows' share of the frame without them.
+void shadow_share(benchmark::State& state) {
+    const auto particles_per_side = static_cast<int>(state.range(0));
+    const auto threads = static_cast<int>(state.range(1));
+    const Simulation& simulation = settled_sheet(particles_per_side);
+    SceneLoadResult loaded = load_scene_file(std::string(WEFT_SOURCE_DIR "/assets/scenes/cloth_") +
+                                             std::to_string(particles_per_side) + ".toml");
+    const raster::Camera camera = view::scene_camera(*loaded.scene);
+    WorkerPool pool(threads);
+    raster::Framebuffer framebuffer(1280, 720);
+    view::ClothView cloth_view(simulation.cloth());
+    view::FrameOptions without, with;
+    without.shadows = false;
+    const float ground = view::ground_height_below(simulation.cloth(), simulation.colliders());
+    using Clock = std::chrono::steady_clock;
+    double seconds_without = 0.0, seconds_with = 0.0;
+    for (auto _ : state) {
+        for (const bool shadows : {false, true}) {
+            const Clock::time_point start = Clock::now();
+            view::render_frame(framebuffer, camera, simulation.cloth(), cloth_view,
+                               shadows ? with : without, ground, simulation.colliders(), &pool);
+            benchmark::DoNotOptimize(framebuffer.colours().data());
+            (shadows ? seconds_with : seconds_without) +=
+                std::chrono::duration<double>(Clock::now() - start).count();
+        }
+    }
+    const auto frames = static_cast<double>(state.iterations());
+    state.counters["ms_without"] = 1e3 * seconds_without / frames;
+    state.counters["ms_with"] = 1e3 * seconds_with / frames;
+    state.counters["shadow_share"] = seconds_with / seconds_without - 1.0;
+}
+
+BENCHMARK(shadow_share)
+    ->ArgNames({"side", "threads"})
+    ->ArgsProduct({{128, 256}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 BENCHMARK(draw_frame)
     ->ArgNames({"side", "shadows", "threads"})

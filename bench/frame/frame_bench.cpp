@@ -46,25 +46,37 @@ const Simulation& settled_sheet(int particles_per_side) {
     return *sheets.emplace(particles_per_side, std::move(simulation)).first->second;
 }
 
-void draw_frame(benchmark::State& state) {
-    const auto particles_per_side = static_cast<int>(state.range(0));
-    const bool shadows = state.range(1) != 0;
-    const auto threads = static_cast<int>(state.range(2));
-    const Simulation& simulation = settled_sheet(particles_per_side);
-    SceneLoadResult loaded = load_scene_file(std::string(WEFT_SOURCE_DIR "/assets/scenes/cloth_") +
-                                             std::to_string(particles_per_side) + ".toml");
-    const raster::Camera camera = view::scene_camera(*loaded.scene);
-    WorkerPool pool(threads);
-    raster::Framebuffer framebuffer(1280, 720);
-    view::ClothView cloth_view(simulation.cloth());
-    view::FrameOptions options;
-    options.shadows = shadows;
-    const float ground = view::ground_height_below(simulation.cloth(), simulation.colliders());
-    for (auto _ : state) {
+// The settled sheet of this size drawn through its scene's camera at 1280x720 on `threads`.
+struct FrameDrawer {
+    FrameDrawer(int particles_per_side, int threads)
+        : simulation(settled_sheet(particles_per_side)),
+          camera(view::scene_camera(simulation.scene())),
+          pool(threads),
+          cloth_view(simulation.cloth()),
+          ground(view::ground_height_below(simulation.cloth(), simulation.colliders())) {}
+
+    void draw(const view::FrameOptions& options) {
         view::render_frame(framebuffer, camera, simulation.cloth(), cloth_view, options, ground,
                            simulation.colliders(), &pool);
         benchmark::DoNotOptimize(framebuffer.colours().data());
     }
+
+    const Simulation& simulation;
+    raster::Camera camera;
+    WorkerPool pool;
+    raster::Framebuffer framebuffer{1280, 720};
+    view::ClothView cloth_view;
+    float ground;
+};
+
+void draw_frame(benchmark::State& state) {
+    const auto particles_per_side = static_cast<int>(state.range(0));
+    const bool shadows = state.range(1) != 0;
+    const auto threads = static_cast<int>(state.range(2));
+    FrameDrawer drawer(particles_per_side, threads);
+    view::FrameOptions options;
+    options.shadows = shadows;
+    for (auto _ : state) drawer.draw(options);
     state.SetLabel(std::to_string(particles_per_side) + "² sheet, shadows " +
                    (shadows ? "on" : "off") + ", " + std::to_string(threads) + " thread(s)");
 }
@@ -73,26 +85,15 @@ void draw_frame(benchmark::State& state) {
 // shadows and then with them, so the machine's drift (large on a shared host) falls on both
 // alike. Counters: the mean of each, ms, and the shadows' share of the frame without them.
 void shadow_share(benchmark::State& state) {
-    const auto particles_per_side = static_cast<int>(state.range(0));
-    const auto threads = static_cast<int>(state.range(1));
-    const Simulation& simulation = settled_sheet(particles_per_side);
-    SceneLoadResult loaded = load_scene_file(std::string(WEFT_SOURCE_DIR "/assets/scenes/cloth_") +
-                                             std::to_string(particles_per_side) + ".toml");
-    const raster::Camera camera = view::scene_camera(*loaded.scene);
-    WorkerPool pool(threads);
-    raster::Framebuffer framebuffer(1280, 720);
-    view::ClothView cloth_view(simulation.cloth());
+    FrameDrawer drawer(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
     view::FrameOptions without, with;
     without.shadows = false;
-    const float ground = view::ground_height_below(simulation.cloth(), simulation.colliders());
     using Clock = std::chrono::steady_clock;
     double seconds_without = 0.0, seconds_with = 0.0;
     for (auto _ : state) {
         for (const bool shadows : {false, true}) {
             const Clock::time_point start = Clock::now();
-            view::render_frame(framebuffer, camera, simulation.cloth(), cloth_view,
-                               shadows ? with : without, ground, simulation.colliders(), &pool);
-            benchmark::DoNotOptimize(framebuffer.colours().data());
+            drawer.draw(shadows ? with : without);
             (shadows ? seconds_with : seconds_without) +=
                 std::chrono::duration<double>(Clock::now() - start).count();
         }

@@ -75,11 +75,16 @@ bool some_spring_longer_than(const Cloth& cloth, double ratio, WorkerPool* pool)
     return largest_stretch_ratio(cloth, pool) > ratio;
 }
 
-// The largest error of the step's linearisation over the springs, in rest lengths: for each
-// spring, how far its force at the end of the step, k (|d1| - L) d1 / |d1|, is from what the
-// step assumed, f(d0) + K(d0) (d1 - d0) (K as in the header, the compressed spring's negative
-// transverse term left out as in the step), divided by k L. `start`: the positions x0.
-double largest_linearisation_error(const Cloth& cloth, std::span<const Vec3> start,
+// The largest error of the step's linearisation over the springs that end the step longer
+// than `ratio` rest lengths, in rest lengths: for each, how far its force at the end of the
+// step, k (|d1| - L) d1 / |d1|, is from what the step assumed, f(d0) + K(d0) (d1 - d0) (K as
+// in the header), divided by k L. `start`: the positions x0.
+//
+// Shorter springs are left out. A compressed spring's force is at most k L, so its error
+// cannot run away, but it is large by design where a fold turns one over (the step drops its
+// negative transverse term); counted, the bend springs in a fold kept a sheet under the hand
+// splitting to the deepest level on most steps without the split changing anything.
+double largest_linearisation_error(const Cloth& cloth, std::span<const Vec3> start, double ratio,
                                    WorkerPool* pool) {
     double largest = 0.0;
     for (const SpringGroup& group : cloth.topology().spring_groups)
@@ -92,7 +97,7 @@ double largest_linearisation_error(const Cloth& cloth, std::span<const Vec3> sta
                     const Vec3 before = start[spring.j] - start[spring.i];
                     const Vec3 after = cloth.positions[spring.j] - cloth.positions[spring.i];
                     const double l0 = glm::length(before), l1 = glm::length(after);
-                    if (!(l0 > 0.0) || !(l1 > 0.0) || !(spring.rest_length > 0.0)) continue;
+                    if (!(l0 > 0.0) || !(l1 > ratio * spring.rest_length)) continue;
                     const Vec3 u = before / l0, change = after - before;
                     const double along = glm::dot(u, change);
                     const double transverse = std::max(0.0, 1.0 - spring.rest_length / l0);
@@ -118,8 +123,9 @@ double largest_linearisation_error(const Cloth& cloth, std::span<const Vec3> sta
 // × k L from what the step assumed is taken again in halves: the error of the linearisation
 // falls as the square of the step's motion. A hand pulling a sheet taut stretches its
 // springs along themselves, where the linearisation is close to exact, and is not split.
-void step_or_split(Cloth& cloth, const ForceField& field, double dt, IntegratorWorkspace& work,
-                   int depth) {
+// Returns the depth of the finest piece taken.
+int step_or_split(Cloth& cloth, const ForceField& field, double dt, IntegratorWorkspace& work,
+                  int depth) {
     const ImplicitSolveSettings& settings = work.implicit_settings;
     const bool may_split = depth < settings.max_split_depth && settings.split_stretch_ratio > 1.0;
     if (may_split) {
@@ -136,16 +142,17 @@ void step_or_split(Cloth& cloth, const ForceField& field, double dt, IntegratorW
     take_linearised_step(cloth, field, dt, work);
     work.implicit_last_iterations += iterations_before;
     if (!may_split || !some_spring_longer_than(cloth, settings.split_stretch_ratio, work.pool) ||
-        !(largest_linearisation_error(cloth, work.implicit_step_start_positions, work.pool) >
-          settings.split_force_error))
-        return;
+        !(largest_linearisation_error(cloth, work.implicit_step_start_positions,
+                                      settings.split_stretch_ratio,
+                                      work.pool) > settings.split_force_error))
+        return depth;
     ++work.implicit_last_splits;
     std::copy(work.implicit_step_start_positions.begin(), work.implicit_step_start_positions.end(),
               cloth.positions.begin());
     std::copy(work.implicit_step_start_velocities.begin(),
               work.implicit_step_start_velocities.end(), cloth.velocities.begin());
-    step_or_split(cloth, field, 0.5 * dt, work, depth + 1);
-    step_or_split(cloth, field, 0.5 * dt, work, depth + 1);
+    const int first = step_or_split(cloth, field, 0.5 * dt, work, depth + 1);
+    return std::max(first, step_or_split(cloth, field, 0.5 * dt, work, depth + 1));
 }
 
 }  // namespace
@@ -154,7 +161,15 @@ void step_implicit_euler(Cloth& cloth, const ForceField& field, double dt,
                          IntegratorWorkspace& work) {
     work.implicit_last_iterations = 0;
     work.implicit_last_splits = 0;
-    step_or_split(cloth, field, dt, work, 0);
+    // A step-size controller's memory: a step that had to be split is followed by one that
+    // starts one level coarser than its finest piece, not by a whole step that would most
+    // likely fail again and be thrown away. A step that needs no split brings it back to 0.
+    const int start = std::min(work.implicit_start_depth, work.implicit_settings.max_split_depth);
+    const int pieces = 1 << start;
+    int finest = start;
+    for (int piece = 0; piece < pieces; ++piece)
+        finest = std::max(finest, step_or_split(cloth, field, dt / pieces, work, start));
+    work.implicit_start_depth = std::max(0, finest - 1);
 }
 
 namespace {

@@ -31,6 +31,7 @@ void IntegratorWorkspace::resize(std::size_t particle_count, Integrator integrat
         std::vector<ImplicitSpringTerms>().swap(implicit_springs);
         implicit_grid = ImplicitGridSolver{};
     }
+    implicit_start_depth = 0;
     history_valid = false;
 }
 

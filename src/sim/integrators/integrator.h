@@ -58,6 +58,7 @@ struct IntegratorWorkspace {
     ImplicitSolveSettings implicit_settings;
     int implicit_last_iterations = 0;  // over all the pieces of a split step
     int implicit_last_splits = 0;      // times the last step was halved (implicit_euler.cpp)
+    int implicit_start_depth = 0;      // the next step starts as 2^depth pieces (ditto)
     // The start of the step being taken, for a split to go back to (sized on first use).
     std::vector<Vec3> implicit_step_start_positions, implicit_step_start_velocities;
     double implicit_last_relative_residual = 0.0;

@@ -55,7 +55,7 @@ Scene resized_sheet(const Scene& base, int n) {
     }
     scene.cloth.rows = scene.cloth.cols = n;
     scene.tear_max_stretch.reset();
-    scene.strain_limit_max_stretch.reset();
+    scene.strain_limit_max_strain.reset();
     scene.self_collision_thickness.reset();
     scene.colliders.clear();
     return scene;

@@ -277,8 +277,8 @@ void session(DemoState& state) {
 void limits(DemoState& state) {
     optional_feature(state, "tearing", SceneKey::tear_max_stretch, &Scene::tear_max_stretch, 1.6,
                      1.05, 5.0, " x rest");
-    optional_feature(state, "strain limit", SceneKey::strain_limit_max_stretch,
-                     &Scene::strain_limit_max_stretch, 0.1, 0.01, 1.0, "");
+    optional_feature(state, "strain limit", SceneKey::strain_limit_max_strain,
+                     &Scene::strain_limit_max_strain, 0.1, 0.01, 0.5, "");
     optional_feature(state, "self-collision", SceneKey::self_collision_thickness,
                      &Scene::self_collision_thickness, 0.01, 0.002, 0.1, " m");
     double radius = state.drag_radius;

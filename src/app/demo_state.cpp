@@ -505,6 +505,8 @@ void DemoState::reset_simulation() {
 
 bool DemoState::load_scene(const std::string& path, std::string& error) {
     SceneLoadResult loaded = load_scene_file(path, overrides);
+    for (const std::string& warning : loaded.warnings)
+        std::fprintf(stderr, "warning: %s\n", warning.c_str());
     if (!loaded.ok()) {
         error = loaded.error->message();
         return false;  // the running simulation is untouched

@@ -130,7 +130,7 @@ struct Scene {
     SpringFamilySpec shear{false, 400.0, 0.5};
     SpringFamilySpec bend{false, 100.0, 0.1};
     std::optional<double> tear_max_stretch;          // [tearing] max_stretch (> 1)
-    std::optional<double> strain_limit_max_stretch;  // [strain_limit] max_stretch (> 0)
+    std::optional<double> strain_limit_max_strain;   // [strain_limit] max_strain (0 to 1)
     std::optional<double> self_collision_thickness;  // [self_collision] thickness, m (> 0)
     ForcesSpec forces;
     SolverSpec solver;

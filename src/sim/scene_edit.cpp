@@ -25,7 +25,7 @@ constexpr SceneKey all_keys[] = {
     SceneKey::bend_stiffness,
     SceneKey::bend_damping,
     SceneKey::tear_max_stretch,
-    SceneKey::strain_limit_max_stretch,
+    SceneKey::strain_limit_max_strain,
     SceneKey::self_collision_thickness,
     SceneKey::gravity,
     SceneKey::air_drag,
@@ -60,15 +60,15 @@ auto& family_of(SceneType& scene, SceneKey key) {
 
 template <class SceneType>
 auto& feature_of(SceneType& scene, SceneKey key) {
-    return key == SceneKey::tear_max_stretch           ? scene.tear_max_stretch
-           : key == SceneKey::strain_limit_max_stretch ? scene.strain_limit_max_stretch
-                                                       : scene.self_collision_thickness;
+    return key == SceneKey::tear_max_stretch          ? scene.tear_max_stretch
+           : key == SceneKey::strain_limit_max_strain ? scene.strain_limit_max_strain
+                                                      : scene.self_collision_thickness;
 }
 
 NumberRule feature_rule(SceneKey key) {
-    return key == SceneKey::tear_max_stretch           ? scene_rules::tear_max_stretch
-           : key == SceneKey::strain_limit_max_stretch ? scene_rules::strain_limit_max_stretch
-                                                       : scene_rules::self_collision_thickness;
+    return key == SceneKey::tear_max_stretch          ? scene_rules::tear_max_stretch
+           : key == SceneKey::strain_limit_max_strain ? scene_rules::strain_limit_max_strain
+                                                      : scene_rules::self_collision_thickness;
 }
 
 // The value `key` has in `scene` (its collider `collider`'s, for a collider key).
@@ -108,7 +108,7 @@ SceneValue value_of(const Scene& scene, SceneKey key, std::uint32_t collider) {
         case SceneKey::bend_damping:
             return family_of(scene, key).damping;
         case SceneKey::tear_max_stretch:
-        case SceneKey::strain_limit_max_stretch:
+        case SceneKey::strain_limit_max_strain:
         case SceneKey::self_collision_thickness: {
             const auto& feature = feature_of(scene, key);
             return feature ? SceneValue{*feature} : SceneValue{FeatureOff{}};
@@ -183,7 +183,7 @@ std::optional<std::string> edit_problem(const Scene& scene, const SceneEdit& edi
                std::to_string(scene.colliders.size()) + ")";
     const SceneValue current = value_of(scene, edit.key, edit.collider);
     const bool feature = edit.key == SceneKey::tear_max_stretch ||
-                         edit.key == SceneKey::strain_limit_max_stretch ||
+                         edit.key == SceneKey::strain_limit_max_strain ||
                          edit.key == SceneKey::self_collision_thickness;
     const bool same_type = current.index() == edit.value.index() ||
                            (feature && (std::holds_alternative<double>(edit.value) ||
@@ -213,7 +213,7 @@ std::optional<std::string> edit_problem(const Scene& scene, const SceneEdit& edi
                 rule = scene_rules::spring_damping;
                 break;
             case SceneKey::tear_max_stretch:
-            case SceneKey::strain_limit_max_stretch:
+            case SceneKey::strain_limit_max_strain:
             case SceneKey::self_collision_thickness:
                 rule = feature_rule(edit.key);
                 break;
@@ -308,7 +308,7 @@ void assign(Scene& scene, const SceneEdit& edit) {
             family_of(scene, edit.key).damping = std::get<double>(value);
             return;
         case SceneKey::tear_max_stretch:
-        case SceneKey::strain_limit_max_stretch:
+        case SceneKey::strain_limit_max_strain:
         case SceneKey::self_collision_thickness:
             if (const auto* number = std::get_if<double>(&value))
                 feature_of(scene, edit.key) = *number;

@@ -43,7 +43,7 @@ enum class SceneKey : std::uint8_t {
     bend_stiffness,
     bend_damping,
     tear_max_stretch,  // a number, or FeatureOff to switch tearing off
-    strain_limit_max_stretch,
+    strain_limit_max_strain,
     self_collision_thickness,
     gravity,
     air_drag,
@@ -84,7 +84,7 @@ inline constexpr std::array<std::string_view, 38> scene_key_names = {
     "springs.bend.stiffness",
     "springs.bend.damping",
     "tearing.max_stretch",
-    "strain_limit.max_stretch",
+    "strain_limit.max_strain",
     "self_collision.thickness",
     "forces.gravity",
     "forces.air_drag",

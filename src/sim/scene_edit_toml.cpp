@@ -46,6 +46,9 @@ std::optional<SceneEdit> read_typed(TomlReader& reader, const std::string& key,
     SceneEdit edit;
     std::string plain = key;
     const bool indexed = split_collider_index(key, plain, edit.collider);
+    // The strain limit's old name, as a recording made before the rename has it (the scene
+    // loader takes it too, with a warning): the same strain.
+    if (plain == "strain_limit.max_stretch") plain = "strain_limit.max_strain";
     std::size_t found = scene_key_names.size();
     for (std::size_t k = 0; k < scene_key_names.size(); ++k)
         if (plain == scene_key_names[k]) found = k;
@@ -83,7 +86,7 @@ std::optional<SceneEdit> read_typed(TomlReader& reader, const std::string& key,
             return edit;
         }
         case SceneKey::tear_max_stretch:
-        case SceneKey::strain_limit_max_stretch:
+        case SceneKey::strain_limit_max_strain:
         case SceneKey::self_collision_thickness:
             if (value.is_boolean() && !value.as_boolean()->get()) {  // false: switched off
                 edit.value = FeatureOff{};

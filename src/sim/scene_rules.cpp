@@ -20,9 +20,9 @@ std::optional<std::string> number_problem(std::string_view key, double value, Nu
     if (rule.minimum && (rule.exclusive_minimum ? value <= *rule.minimum : value < *rule.minimum))
         return name + " must be " + (rule.exclusive_minimum ? "> " : ">= ") +
                format_number(*rule.minimum) + ", got " + format_number(value);
-    if (rule.maximum && value > *rule.maximum)
-        return name + " must be <= " + format_number(*rule.maximum) + ", got " +
-               format_number(value);
+    if (rule.maximum && (rule.exclusive_maximum ? value >= *rule.maximum : value > *rule.maximum))
+        return name + " must be " + (rule.exclusive_maximum ? "< " : "<= ") +
+               format_number(*rule.maximum) + ", got " + format_number(value);
     return std::nullopt;
 }
 

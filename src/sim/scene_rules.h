@@ -21,7 +21,8 @@ namespace weft {
 struct NumberRule {
     std::optional<double> minimum;  // inclusive unless exclusive_minimum
     bool exclusive_minimum = false;
-    std::optional<double> maximum;  // inclusive
+    std::optional<double> maximum;  // inclusive unless exclusive_maximum
+    bool exclusive_maximum = false;
 };
 
 namespace scene_rules {
@@ -35,7 +36,10 @@ inline constexpr NumberRule particle_mass = positive;         // kg
 inline constexpr NumberRule density = positive;               // kg/m²
 // A spring tears past this many rest lengths: at 1 or less a sheet at rest would shred.
 inline constexpr NumberRule tear_max_stretch{1.0, true, std::nullopt};
-inline constexpr NumberRule strain_limit_max_stretch = positive;
+// A strain: springs longer than (1 + max_strain) rest lengths are shortened. At 1 (100 %) or
+// more it no longer limits anything a cloth does, so a value there is a mistake, most often a
+// ratio of lengths (the old name max_stretch invited it: [tearing] max_stretch is one).
+inline constexpr NumberRule strain_limit_max_strain{0.0, true, 1.0, true};
 inline constexpr NumberRule self_collision_thickness = positive;  // m
 inline constexpr NumberRule air_drag = non_negative;              // N·s/m
 inline constexpr NumberRule gust{0.0, false, 1.0};                // share of the wind

@@ -161,6 +161,33 @@ void read_optional_feature(TomlReader& reader, const toml::table& root, std::str
     out = value;
 }
 
+// [strain_limit] max_strain, a strain (0.1: springs are held within 10 % of their rest
+// length). Its old name, max_stretch, is what [tearing] calls a ratio of lengths (1.6: torn
+// at 160 %); a scene that still says it loads, with a warning, and the value means the same.
+void read_strain_limit(TomlReader& reader, const toml::table& root, Scene& scene) {
+    const toml::table* table = reader.sub_table(root, "", "strain_limit");
+    if (!table) return;
+    if (!reader.check_keys(*table, "strain_limit", {"max_strain", "max_stretch"})) return;
+    const toml::node* old_name = table->get("max_stretch");
+    if (old_name && table->contains("max_strain")) {
+        reader.fail(*old_name, "strain_limit.max_stretch",
+                    "strain_limit.max_stretch is the old name of strain_limit.max_strain: give "
+                    "max_strain alone");
+        return;
+    }
+    double value = 0.1;
+    if (!reader.read_number(*table, "strain_limit", old_name ? "max_stretch" : "max_strain", value,
+                            scene_rules::strain_limit_max_strain))
+        return;
+    scene.strain_limit_max_strain = value;
+    if (old_name)
+        reader.warn(*old_name, "strain_limit.max_stretch",
+                    "strain_limit.max_stretch is the old name of strain_limit.max_strain (the "
+                    "same strain: " +
+                        format_number(value) + ", " + format_number(100.0 * value) +
+                        " % over rest length); rename it");
+}
+
 void read_forces_and_solver(TomlReader& reader, const toml::table& root, Scene& scene) {
     if (const toml::table* forces = reader.sub_table(root, "", "forces")) {
         reader.check_keys(*forces, "forces", {"gravity", "air_drag", "wind", "gust"});
@@ -301,8 +328,7 @@ SceneLoadResult load_scene_text(std::string_view toml_text, std::string_view sou
     read_springs(reader, root, scene);
     read_optional_feature(reader, root, "tearing", "max_stretch", 1.6,
                           scene_rules::tear_max_stretch, scene.tear_max_stretch);
-    read_optional_feature(reader, root, "strain_limit", "max_stretch", 0.1,
-                          scene_rules::strain_limit_max_stretch, scene.strain_limit_max_stretch);
+    read_strain_limit(reader, root, scene);
     read_optional_feature(reader, root, "self_collision", "thickness", 0.01,
                           scene_rules::self_collision_thickness, scene.self_collision_thickness);
     if (!reader.failed() && scene.self_collision_thickness) {
@@ -325,6 +351,7 @@ SceneLoadResult load_scene_text(std::string_view toml_text, std::string_view sou
     }
 
     result.scene = std::move(scene);
+    result.warnings = reader.warnings();
     return result;
 }
 

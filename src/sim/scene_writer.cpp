@@ -105,8 +105,8 @@ std::string scene_to_toml(const Scene& scene) {
 
     if (scene.tear_max_stretch)
         out << "\n[tearing]\nmax_stretch = " << toml_number(*scene.tear_max_stretch) << "\n";
-    if (scene.strain_limit_max_stretch)
-        out << "\n[strain_limit]\nmax_stretch = " << toml_number(*scene.strain_limit_max_stretch)
+    if (scene.strain_limit_max_strain)
+        out << "\n[strain_limit]\nmax_strain = " << toml_number(*scene.strain_limit_max_strain)
             << "\n";
     if (scene.self_collision_thickness)
         out << "\n[self_collision]\nthickness = " << toml_number(*scene.self_collision_thickness)

@@ -141,7 +141,7 @@ StepReport Simulation::take_step(bool judge_grip) {
     // The contacts and self-collision's measure ride on the fused step's rows when nothing
     // comes between them and the step (the strain limiter would).
     const bool on_rows =
-        !scene_.strain_limit_max_stretch && (!colliders_.empty() || self_collision_);
+        !scene_.strain_limit_max_strain && (!colliders_.empty() || self_collision_);
     SelfCollision::MeasuredMoves measured(cloth_.particle_count());
     OnSteppedRows rows_work{
         colliders_, workspace_.next_positions, workspace_.next_velocities,
@@ -172,8 +172,8 @@ StepReport Simulation::take_step(bool judge_grip) {
     // the Verlets carry stale.
     std::size_t corrections = 0;
     std::size_t strain_corrections = 0;
-    if (scene_.strain_limit_max_stretch)
-        strain_corrections = limit_strain(cloth_, *scene_.strain_limit_max_stretch, dt_);
+    if (scene_.strain_limit_max_strain)
+        strain_corrections = limit_strain(cloth_, *scene_.strain_limit_max_strain, dt_);
     // Position Verlet's history is its previous positions, and the limiter's correction
     // moves a particle by Δx and changes its velocity by Δx / h: exactly what keeping
     // x_{n-1} makes of it (Provot's correction was made for Verlet). Restarting the history
@@ -335,9 +335,9 @@ void Simulation::set_tear_limit(std::optional<double> max_stretch) {
     scene_.tear_max_stretch = max_stretch;
 }
 
-void Simulation::set_strain_limit(std::optional<double> max_stretch) {
+void Simulation::set_strain_limit(std::optional<double> max_strain) {
     energy_guard_.forget();  // the energy is measured against other terms now
-    scene_.strain_limit_max_stretch = max_stretch;
+    scene_.strain_limit_max_strain = max_strain;
 }
 
 void Simulation::build_colliders() {
@@ -378,7 +378,7 @@ void Simulation::set_parameters(const Scene& wanted) {
         scene_.forces.gust = wanted.forces.gust;
     }
     set_tear_limit(wanted.tear_max_stretch);
-    set_strain_limit(wanted.strain_limit_max_stretch);
+    set_strain_limit(wanted.strain_limit_max_strain);
     if (wanted.self_collision_thickness != scene_.self_collision_thickness) {
         scene_.self_collision_thickness = wanted.self_collision_thickness;
         self_collision_.reset();

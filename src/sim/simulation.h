@@ -94,7 +94,7 @@ class Simulation {
     void set_family_enabled(SpringFamily family,
                             bool enabled);  // kg, every particle; pins stay pinned
     void set_tear_limit(std::optional<double> max_stretch);
-    void set_strain_limit(std::optional<double> max_stretch);
+    void set_strain_limit(std::optional<double> max_strain);
     // The scene's colliders in its order, then the floor if it has one (floor.h).
     const std::vector<Collider>& colliders() const { return colliders_; }
 

@@ -99,6 +99,10 @@ bool TomlReader::fail_with(SceneError error) {
     return false;
 }
 
+void TomlReader::warn(const toml::node& node, const std::string& path, const std::string& what) {
+    warnings_.push_back(where(node.source(), path) + ": " + what);
+}
+
 bool TomlReader::fail(const toml::node& node, const std::string& path, std::string what) {
     return fail_at(node.source(), path, std::move(what));
 }

@@ -12,6 +12,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "sim/scene.h"
 #include "sim/scene_loader.h"
@@ -39,6 +40,10 @@ class TomlReader {
                const std::optional<std::string>& problem);
     // Records an error found outside the document, e.g. at a line of the mesh file it names.
     bool fail_with(SceneError error);
+    // Records a warning at `node`: "WHERE: WHAT", WHERE as an error's would be (the caller
+    // says "warning: ").
+    void warn(const toml::node& node, const std::string& path, const std::string& what);
+    const std::vector<std::string>& warnings() const { return warnings_; }
 
     // Every key of `table` (at `path`; "" for the root) must be in `allowed`.
     bool check_keys(const toml::table& table, const std::string& path,
@@ -77,6 +82,7 @@ class TomlReader {
     std::string source_name_;
     std::set<std::string> overridden_;
     std::optional<SceneError> error_;
+    std::vector<std::string> warnings_;
 };
 
 // Splits one --set style "KEY=VALUE" and parses VALUE into snippet["value"]. A VALUE that is

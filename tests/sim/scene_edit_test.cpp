@@ -60,8 +60,11 @@ const char* const overrides[] = {
     "springs.structural.stiffness=inf",
     "tearing.max_stretch=1.3",
     "tearing.max_stretch=1",
-    "strain_limit.max_stretch=0.05",
-    "strain_limit.max_stretch=0",
+    "strain_limit.max_strain=0.05",
+    "strain_limit.max_strain=0",
+    "strain_limit.max_strain=1.5",
+    "strain_limit.max_stretch=0.2",  // the old name, read as max_strain
+    "strain_limit.max_stretch=1.5",
     "self_collision.thickness=0.05",
     "self_collision.thickness=0.2",
     "forces.gravity=[0,-1.62,0]",
@@ -158,7 +161,7 @@ TEST(SceneEdit, TheEditsBetweenTwoScenesMakeOneTheOther) {
     to.shear.stiffness = 123.0;
     to.bend.enabled = true;
     to.tear_max_stretch.reset();
-    to.strain_limit_max_stretch = 0.2;
+    to.strain_limit_max_strain = 0.2;
     to.forces.wind = {1.0, 2.0, 3.0};
     to.solver.integrator = Integrator::implicit_euler;
     to.colliders[1].point = {0.0, -2.0, 0.0};

@@ -79,7 +79,7 @@ damping = 0.75
 [tearing]
 max_stretch = 2.0
 [strain_limit]
-max_stretch = 0.2
+max_strain = 0.2
 [self_collision]
 thickness = 0.02
 [forces]
@@ -128,7 +128,7 @@ fov_degrees = 70
     EXPECT_EQ(s.bend.stiffness, 30.0);
     EXPECT_EQ(s.bend.damping, 0.75);
     EXPECT_EQ(s.tear_max_stretch, 2.0);
-    EXPECT_EQ(s.strain_limit_max_stretch, 0.2);
+    EXPECT_EQ(s.strain_limit_max_strain, 0.2);
     EXPECT_EQ(s.self_collision_thickness, 0.02);
     EXPECT_EQ(s.forces.gravity, (Vec3d{0.0, -1.5, 0.0}));
     EXPECT_EQ(s.forces.air_drag, 0.3);
@@ -191,6 +191,40 @@ TEST(SceneLoader, OutOfRangeValuesAreRefused) {
     EXPECT_TRUE(contains(error_of("[forces]\nwind = [0, inf, 0]\n").what, "finite"));
     EXPECT_TRUE(
         contains(error_of("[springs.structural]\nenabled = false\n").what, "cannot be disabled"));
+}
+
+// [strain_limit] max_strain is a strain (0.1: within 10 % of rest length); its old name
+// max_stretch, which [tearing] uses for a ratio of lengths, invited 1.5 for "150 %", which
+// limited nothing. A strain of 100 % or more is refused under either name; the old name still
+// loads, meaning the same strain, with a warning that names where it is.
+TEST(SceneLoader, TheStrainLimitIsAStrainBelowOneUnderItsNewNameOrItsOld) {
+    EXPECT_TRUE(contains(error_of("[strain_limit]\nmax_strain = 1.5\n").what,
+                         "strain_limit.max_strain must be < 1, got 1.5"));
+    EXPECT_TRUE(contains(error_of("[strain_limit]\nmax_strain = 1\n").what, "must be < 1"));
+    EXPECT_TRUE(contains(error_of("[strain_limit]\nmax_stretch = 1.5\n").what,
+                         "strain_limit.max_stretch must be < 1, got 1.5"));
+    EXPECT_TRUE(contains(error_of("[strain_limit]\nmax_strain = 0\n").what, "must be > 0"));
+    EXPECT_TRUE(contains(error_of("[strain_limit]\nmax_strain = 0.1\nmax_stretch = 0.1\n").what,
+                         "give max_strain alone"));
+
+    const SceneLoadResult current = load_scene_text("[strain_limit]\nmax_strain = 0.1\n", "a.toml");
+    ASSERT_TRUE(current.ok());
+    EXPECT_EQ(current.scene->strain_limit_max_strain, 0.1);
+    EXPECT_TRUE(current.warnings.empty());
+
+    const SceneLoadResult old = load_scene_text("[strain_limit]\nmax_stretch = 0.1\n", "old.toml");
+    ASSERT_TRUE(old.ok());
+    EXPECT_EQ(old.scene->strain_limit_max_strain, 0.1);
+    ASSERT_EQ(old.warnings.size(), 1u);
+    EXPECT_TRUE(contains(old.warnings[0], "old.toml:2:15")) << old.warnings[0];
+    EXPECT_TRUE(contains(old.warnings[0], "old name of strain_limit.max_strain"))
+        << old.warnings[0];
+
+    const SceneLoadResult set = load_scene_text("", "a.toml", {"strain_limit.max_stretch=0.2"});
+    ASSERT_TRUE(set.ok());
+    EXPECT_EQ(set.scene->strain_limit_max_strain, 0.2);
+    ASSERT_EQ(set.warnings.size(), 1u);
+    EXPECT_TRUE(contains(set.warnings[0], "--set strain_limit.max_stretch")) << set.warnings[0];
 }
 
 TEST(SceneLoader, AGridTooLargeForMemoryIsRefusedWithoutAllocating) {

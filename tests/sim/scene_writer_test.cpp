@@ -44,7 +44,7 @@ TEST(SceneWriter, AwkwardValuesReadBackBitForBit) {
     scene.shear = {false, 5e-324, 0.0};  // off but with a material, kept for when it is on
     scene.bend = {true, 1e300, 2.5};
     scene.tear_max_stretch = 1.0000000000000002;
-    scene.strain_limit_max_stretch = 0.1;
+    scene.strain_limit_max_strain = 0.1;
     scene.self_collision_thickness = 0.0049999999999999999;
     scene.forces = {{0.0, -9.80665, 0.0}, 0.02, {1e-310, -2.0, 3.0}};
     scene.solver = {Integrator::velocity_verlet, 1.0 / 3000.0};

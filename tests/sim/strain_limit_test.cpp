@@ -48,9 +48,9 @@ TEST(StrainLimit, KeepsAHeavySheetWithinTheLimit) {
     scene.cloth.cols = 16;
     scene.shear.enabled = true;
     scene.forces.gravity = {0.0, -60.0, 0.0};  // stretches soft springs far without the limit
-    scene.strain_limit_max_stretch = 0.1;
+    scene.strain_limit_max_strain = 0.1;
     Simulation limited(scene);
-    scene.strain_limit_max_stretch.reset();
+    scene.strain_limit_max_strain.reset();
     Simulation free_stretch(scene);
     ASSERT_TRUE(testing::run_steps(limited, 2000));
     ASSERT_TRUE(testing::run_steps(free_stretch, 2000));

@@ -46,6 +46,8 @@ std::variant<CommandLine, CommandLineError> parse_command_line(
             line.version = true;
         } else if (arg == "--headless") {
             line.headless = true;
+        } else if (arg == "--profile") {
+            line.profile = true;
         } else if (is_option("--set")) {
             auto value = take_value("--set");
             if (!value) return CommandLineError{"--set", "expects KEY=VALUE"};
@@ -157,6 +159,7 @@ std::variant<CommandLine, CommandLineError> parse_command_line(
                                     : line.screenshot_path ? "--screenshot"
                                     : line.obj_path        ? "--obj"
                                     : line.frames_dir      ? "--frames"
+                                    : line.profile         ? "--profile"
                                                            : nullptr;
         if (headless_only) return CommandLineError{headless_only, "only applies with --headless"};
     }
@@ -168,10 +171,10 @@ const char* usage_text() {
            "  weft [SCENE.toml] [--set KEY=VALUE]... [--compare METHOD[=DT]]... [--record FILE]\n"
            "  weft --replay SESSION.toml [--compare METHOD[=DT]]...\n"
            "  weft --headless [SCENE.toml] --steps N [--set KEY=VALUE]... [--dump STATE.csv]\n"
-           "       [--obj CLOTH.obj] [--frames DIR [--fps N]]\n"
+           "       [--obj CLOTH.obj] [--frames DIR [--fps N]] [--profile]\n"
            "       [--screenshot IMAGE.png [--size WxH] [--compare METHOD[=DT]]...]\n"
            "  weft --headless --replay SESSION.toml [--dump STATE.csv] [--obj CLOTH.obj]\n"
-           "       [--frames DIR [--fps N]]\n"
+           "       [--frames DIR [--fps N]] [--profile]\n"
            "       [--screenshot IMAGE.png [--size WxH] [--compare METHOD[=DT]]...]\n"
            "  weft --help | --version\n"
            "\n"
@@ -186,6 +189,8 @@ const char* usage_text() {
            "  --frames DIR      write DIR/frame-00000.png, ... one per 1/30 s of simulated\n"
            "                    time from the start, at --size, with the --compare copies\n"
            "  --fps N           frames a second of simulated time for --frames (1-1000)\n"
+           "  --profile         after the run, print where the steps' time went, phase by\n"
+           "                    phase, and the solver's iterations and splits (headless)\n"
            "  --size WxH        screenshot size, or the window's (default 1280x720)\n"
            "  --compare M[=DT]  show a copy of the scene beside it, stepped by integrator M\n"
            "                    (at DT seconds; default the scene's dt), fed the same hand;\n"

@@ -28,6 +28,7 @@ struct CommandLine {
     std::optional<std::string> obj_path;    // --obj FILE.obj: the final cloth as a mesh
     std::optional<std::string> frames_dir;  // --frames DIR: DIR/frame-00000.png, ...
     int frames_per_second = 30;             // --fps N: frames per second of simulated time
+    bool profile = false;                   // --profile: time and counters per phase, on stdout
     std::optional<std::string> screenshot_path;
     int screenshot_width = 1280;  // pixels, --size WxH
     int screenshot_height = 720;

@@ -82,7 +82,13 @@ void DemoState::say(const std::string& text, Tone tone) {
 
 bool Recovery::step(Simulation& simulation, double chosen_dt, std::string& message) {
     const double step_dt = simulation.dt();
+    simulation.set_profiling(profiling);
+    const std::uint64_t evaluations_before = simulation.force_evaluations();
     const StepReport report = simulation.step();
+    if (profiling)
+        profile.add(report.times, report.held, report.hand_slipped,
+                    simulation.force_evaluations() - evaluations_before,
+                    simulation.last_linear_solve().iterations, simulation.last_step_splits());
     if (report.hand_slipped) {
         char text[96];
         std::snprintf(text, sizeof text,

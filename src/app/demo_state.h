@@ -89,6 +89,10 @@ struct Recovery {
     bool trying_grown_dt = false;  // dt grew and has not yet held for growth_wait
     // Restarts with no sound_seconds_before_growth of sound motion between them.
     int restarts_in_a_row = 0;
+    // With profiling on, every step's phases and counters are summed into profile (kept
+    // through rollbacks and restarts: it is the run's, not the state's).
+    bool profiling = false;
+    StepProfile profile;
 
     void forget() {
         last_good.reset();

@@ -1,5 +1,7 @@
 #include "app/headless_runner.h"
 
+#include "app/profile_text.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
@@ -13,6 +15,7 @@
 
 #include "app/demo_state.h"
 #include "app/obj_export.h"
+#include "app/profile_text.h"
 #include "app/session_record.h"
 #include "app/side_by_side.h"
 #include "app/state_dump.h"
@@ -281,8 +284,15 @@ int run_headless(const CommandLine& command_line) {
     if (command_line.screenshot_path || frames) copies = comparison_runs(*scene, command_line);
     if (frames && !frames->write_due(simulation, copies)) return exit_bad_input;
     int status = exit_ok;
+    StepProfile profile;
+    simulation.set_profiling(command_line.profile);
     for (std::uint64_t step = 0; step < *command_line.steps; ++step) {
+        const std::uint64_t evaluations_before = simulation.force_evaluations();
         StepReport report = simulation.step();
+        if (command_line.profile)
+            profile.add(report.times, report.held, report.hand_slipped,
+                        simulation.force_evaluations() - evaluations_before,
+                        simulation.last_linear_solve().iterations, simulation.last_step_splits());
         if (report.diverged()) {
             print_divergence(simulation, *report.divergence, step + 1, *command_line.steps);
             status = exit_diverged;
@@ -291,6 +301,9 @@ int run_headless(const CommandLine& command_line) {
         if (frames && !frames->write_due(simulation, copies)) return exit_bad_input;
     }
     catch_up(copies, simulation.time());
+    if (command_line.profile)
+        std::fputs(app::profile_text(profile, simulation.dt(), simulation.thread_count()).c_str(),
+                   stdout);
     // Also written on divergence: the state that was caught is what one wants to look at.
     if (!write_outputs(command_line, files, runs_of(simulation, copies),
                        final_ground_height(simulation, start_ground_height)))
@@ -313,6 +326,7 @@ int run_headless_replay(const CommandLine& command_line) {
     for (const CommandLine::Comparison& comparison : command_line.comparisons)
         state.add_companion(*integrator_from_name(comparison.integrator),
                             comparison.dt > 0.0 ? comparison.dt : scene.scene->solver.dt);
+    state.recovery.profiling = command_line.profile;
     state.start_replay(*record);
     std::optional<FrameWriter> frames;
     auto runs_now = [&] {
@@ -336,6 +350,11 @@ int run_headless_replay(const CommandLine& command_line) {
         app::counted(static_cast<long long>(record->events.size()), "event", "events").c_str(),
         path.c_str(), static_cast<unsigned long long>(hash_state(state.simulation.cloth())),
         matches ? "matches the recording" : "DIFFERS from the recording");
+    if (command_line.profile)
+        std::fputs(app::profile_text(state.recovery.profile, state.simulation.dt(),
+                                     state.simulation.thread_count())
+                       .c_str(),
+                   stdout);
     if (!write_outputs(command_line, files, runs_now(),
                        final_ground_height(state.simulation, state.ground_height)))
         return exit_bad_input;

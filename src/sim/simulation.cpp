@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <stdexcept>
 
 #include "sim/cloth_builder.h"
@@ -90,6 +91,29 @@ void Simulation::reset() {
     steps_taken_ = 0;
 }
 
+namespace {
+
+// Adds the wall time since the last lap to one phase of a step; reads no clock when off.
+class PhaseClock {
+  public:
+    explicit PhaseClock(bool on) : on_(on) {
+        if (on_) mark_ = Clock::now();
+    }
+    void lap(double& phase) {
+        if (!on_) return;
+        const Clock::time_point now = Clock::now();
+        phase += std::chrono::duration<double>(now - mark_).count();
+        mark_ = now;
+    }
+
+  private:
+    using Clock = std::chrono::steady_clock;
+    bool on_;
+    Clock::time_point mark_{};
+};
+
+}  // namespace
+
 StepReport Simulation::step() {
     // The grip (drag.h). An explicit step cannot answer the hand within itself: its grip is
     // judged before the step, where the hand's move would leave the springs at the hand.
@@ -109,20 +133,28 @@ StepReport Simulation::step() {
     grip_start_velocities_ = cloth_.velocities;
     StepReport report = take_step(true);
     if (!report.hand_slipped) return report;
+    const StepTimes first_try = report.times;
     cloth_.positions = grip_start_positions_;
     cloth_.velocities = grip_start_velocities_;
     end_drag();
     report = take_step(false);
     report.hand_slipped = true;
+    report.times.integrate += first_try.integrate;
+    report.times.strain_limit += first_try.strain_limit;
+    report.times.contacts += first_try.contacts;
+    report.times.tearing += first_try.tearing;
+    report.times.guards += first_try.guards;
     return report;
 }
 
 StepReport Simulation::take_step(bool judge_grip) {
     StepReport report;
+    PhaseClock clock(profiling_);
     // The hand's particles get the velocity that takes them where the hand goes (drag.h).
     // The field points at them only for the step, so a copied Simulation never holds a
     // pointer into another one.
     const bool held = drag_.active();
+    report.held = held;
     if (held) start_hand_motion(drag_, cloth_, dt_);
     field_.held = drag_.particles;
     // Gusts: the wind of this step's start (gusts.h), held through the step.
@@ -168,6 +200,7 @@ StepReport Simulation::take_step(bool judge_grip) {
     field_.held = {};
     field_.colliders = {};
     field_.solids = {};
+    clock.lap(report.times.integrate);
     // Corrections of positions and velocities after the step; any of them makes the history
     // the Verlets carry stale.
     std::size_t corrections = 0;
@@ -181,6 +214,7 @@ StepReport Simulation::take_step(bool judge_grip) {
     // which gains energy: course_pinned.toml, held at the limit every step, vibrated at
     // 3 m/s rms (70 J of kinetic energy in a 15 kg sheet at rest) at any dt.
     if (integrator_ != Integrator::verlet) corrections += strain_corrections;
+    clock.lap(report.times.strain_limit);
     // The step's sweep for the guard stays valid through the contacts and self-collision if
     // they check what they move (sweep_watch.h); the strain limiter moves too many particles
     // for that, and after its corrections the guard sweeps again.
@@ -206,18 +240,21 @@ StepReport Simulation::take_step(bool judge_grip) {
         hold_in_hand(drag_, cloth_);
         if (judge_grip && largest_grip_stretch(drag_, cloth_) > drag_.grip_stretch) {
             report.hand_slipped = true;  // step() takes it again without the hand
+            clock.lap(report.times.contacts);
             return report;
         }
         if (watching)
             for (const std::uint32_t p : drag_.particles)
                 watching->check(p, cloth_.positions[p], cloth_.velocities[p]);
     }
+    clock.lap(report.times.contacts);
     time_ += dt_;
     ++steps_taken_;
     if (scene_.tear_max_stretch) {
         torn_.clear();
         report.springs_torn = tear_overstretched_springs(cloth_, *scene_.tear_max_stretch, &torn_);
     }
+    clock.lap(report.times.tearing);
     // Forces changed with the topology; the Verlets' carried acceleration is stale.
     if (report.springs_torn || corrections) workspace_.history_valid = false;
     // With tearing on, a runaway spring breaks instead of stretching without bound, so only
@@ -235,6 +272,7 @@ StepReport Simulation::take_step(bool judge_grip) {
         report.divergence = tearing_guard_.check(cloth_, torn_, time_, drag_);
     if (!report.divergence)
         report.divergence = energy_guard_.check(cloth_, field_, time_, drag_.active(), pool_.get());
+    clock.lap(report.times.guards);
     return report;
 }
 

@@ -17,6 +17,7 @@
 #include "sim/runaway_tearing.h"
 #include "sim/scene.h"
 #include "sim/self_collision.h"
+#include "sim/step_profile.h"
 #include "sim/topology_edits.h"
 
 namespace weft {
@@ -26,6 +27,8 @@ struct StepReport {
     std::size_t contacts = 0;               // impulse contacts and self-collision pairs resolved
     std::optional<std::string> divergence;  // why the state is no longer sound, if it is not
     bool hand_slipped = false;              // the cloth pulled out of the hand (drag.h)
+    bool held = false;                      // the hand held the cloth through the step
+    StepTimes times;                        // where the step went, when profiling (s)
     bool diverged() const { return divergence.has_value(); }
 };
 
@@ -77,6 +80,9 @@ class Simulation {
     // Threads for the force pass (default: WEFT_THREADS or the machine's). Results are the
     // same bit for bit whatever the count.
     void set_thread_count(int threads);
+    // Whether each step measures its phases into StepReport::times (off: no clock is read).
+    void set_profiling(bool on) { profiling_ = on; }
+    bool profiling() const { return profiling_; }
     int thread_count() const { return pool_->thread_count(); }
     // The threads it steps with, for measures taken between steps (energy, stretch).
     WorkerPool* pool() const { return pool_.get(); }
@@ -163,6 +169,7 @@ class Simulation {
     std::vector<Spring> torn_;  // the springs the last step tore (kept: no allocation a step)
     double time_ = 0.0;
     std::uint64_t steps_taken_ = 0;
+    bool profiling_ = false;
 };
 
 }  // namespace weft

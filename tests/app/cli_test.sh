@@ -147,6 +147,12 @@ check "--frames: the sheet moves from frame to frame" \
 expect 0 quiet -- --headless "$scenes/hanging_sheet.toml" --steps 400 --frames "$work/frames60" \
   --fps 60 --size 64x36
 check "--frames --fps 60: seven frames" test "$(ls "$work/frames60" | wc -l)" -eq 7
+# --profile: where the steps went, on stdout after the run, headless only.
+expect 0 quiet -- --headless "$scenes/hanging_sheet.toml" --steps 100 --profile
+check "--profile: says the steps it measured" grep -q '^profile: 100 steps of 0.25 ms' "$work/out"
+check "--profile: a row per phase and the sum" \
+  test "$(grep -cE '^  (integrate|strain limit|contacts and hand|tearing|guards|all) ' "$work/out")" -eq 6
+expect 2 '^error: --profile: only applies with --headless' -- "$scenes/hanging_sheet.toml" --profile
 # Every shipped session replays to the state hash it recorded (status 4 if not): the golden
 # states of the integrators, the hand and tearing as they ship. A change of the numbers
 # that is meant shows here, and the session's hash is renewed with it.

@@ -1,0 +1,14 @@
+// The text of `weft --headless --profile`: a run's StepProfile as a small table of phases
+// (total, per step, share) and the solver's counters.
+#pragma once
+
+#include <string>
+
+#include "sim/step_profile.h"
+
+namespace weft::app {
+
+// `dt`: the run's step (s), `threads`: the step's worker threads.
+std::string profile_text(const StepProfile& profile, double dt, int threads);
+
+}  // namespace weft::app

@@ -1,0 +1,53 @@
+// Where a run's steps spend their time, phase by phase, and how its solves went: the times a
+// profiled Simulation puts in each StepReport (StepTimes), and their sum over a run
+// (StepProfile), which `weft --headless --profile` prints and the panel shows.
+#pragma once
+
+#include <cstdint>
+
+namespace weft {
+
+// One step's phases, in the order Simulation::step takes them (s, wall clock). A step taken
+// again after the cloth slipped from the hand counts both tries.
+struct StepTimes {
+    double integrate = 0.0;  // the integrator's step: forces, and implicit Euler's solve
+                             // with its splits (the fused grid step also resolves the
+                             // contacts on its rows, counted here then)
+    double strain_limit = 0.0;
+    double contacts = 0.0;  // impulse contacts, self-collision and the hand's hold
+    double tearing = 0.0;
+    double guards = 0.0;  // divergence, runaway-tearing and energy guards
+    double total() const { return integrate + strain_limit + contacts + tearing + guards; }
+};
+
+struct StepProfile {
+    std::uint64_t steps = 0;
+    std::uint64_t held_steps = 0;  // with the hand holding the cloth
+    std::uint64_t slips = 0;       // steps in which the cloth slipped from the hand
+    StepTimes seconds;             // summed over the steps
+    std::uint64_t force_evaluations = 0;
+    // Implicit Euler: conjugate-gradient iterations and halvings, over all a step's pieces.
+    std::uint64_t solver_iterations = 0;
+    int most_iterations = 0;  // in one step
+    std::uint64_t splits = 0;
+    int most_splits = 0;
+
+    void add(const StepTimes& times, bool held, bool slipped, std::uint64_t force_evaluations_added,
+             int iterations, int step_splits) {
+        ++steps;
+        held_steps += held ? 1 : 0;
+        slips += slipped ? 1 : 0;
+        seconds.integrate += times.integrate;
+        seconds.strain_limit += times.strain_limit;
+        seconds.contacts += times.contacts;
+        seconds.tearing += times.tearing;
+        seconds.guards += times.guards;
+        force_evaluations += force_evaluations_added;
+        solver_iterations += static_cast<std::uint64_t>(iterations);
+        most_iterations = iterations > most_iterations ? iterations : most_iterations;
+        splits += static_cast<std::uint64_t>(step_splits);
+        most_splits = step_splits > most_splits ? step_splits : most_splits;
+    }
+};
+
+}  // namespace weft

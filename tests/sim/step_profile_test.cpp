@@ -1,0 +1,84 @@
+// The step's profile (step_profile.h): it counts what the run did, it reads no clock when off,
+// and it never changes a bit of the state.
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include "app/profile_text.h"
+#include "sim/drag.h"
+#include "sim/scene_loader.h"
+#include "sim/simulation.h"
+#include "sim/state_hash.h"
+
+namespace weft {
+namespace {
+
+// cloth_128.toml's material at 32², by implicit Euler, grabbed at its bottom middle after 10
+// steps and lifted fast enough that some steps split.
+struct LiftedSheet {
+    Simulation simulation;
+    StepProfile profile;
+    std::uint64_t iterations = 0, splits = 0, held = 0;
+    explicit LiftedSheet(bool profiling)
+        : simulation(*load_scene_file(WEFT_SOURCE_DIR "/assets/scenes/cloth_128.toml",
+                                      {"cloth.rows=32", "cloth.cols=32",
+                                       "cloth.spacing=0.0371",           // m: 1.15 m / 31
+                                       "cloth.particle_mass=0.000275"})  // kg: 0.2 kg/m² × spacing²
+                          .scene) {
+        simulation.set_profiling(profiling);
+    }
+    void run() {
+        const std::uint32_t grabbed = 31 * 32 + 16;
+        for (int step = 0; step < 40; ++step) {
+            if (step == 10) {
+                const Vec3 at = simulation.cloth().positions[grabbed];
+                simulation.start_drag(grab_cloth(simulation.cloth(), {0, grabbed, 1.0, at}, 0.08));
+            }
+            if (step >= 10)
+                simulation.move_drag_target(simulation.cloth().positions[grabbed] +
+                                            Vec3(0.0, 0.08, 0.03));  // 4.9 m/s up
+            const std::uint64_t evaluations = simulation.force_evaluations();
+            const StepReport report = simulation.step();
+            ASSERT_FALSE(report.diverged()) << step;
+            iterations += static_cast<std::uint64_t>(simulation.last_linear_solve().iterations);
+            splits += static_cast<std::uint64_t>(simulation.last_step_splits());
+            held += report.held ? 1 : 0;
+            if (!simulation.profiling()) {
+                EXPECT_EQ(report.times.total(), 0.0) << step;
+            }
+            profile.add(report.times, report.held, report.hand_slipped,
+                        simulation.force_evaluations() - evaluations,
+                        simulation.last_linear_solve().iterations, simulation.last_step_splits());
+        }
+    }
+};
+
+TEST(StepProfile, CountsWhatTheStepsDidAndChangesNoBit) {
+    LiftedSheet plain(false), profiled(true);
+    plain.run();
+    profiled.run();
+    EXPECT_EQ(hash_state(plain.simulation.cloth()), hash_state(profiled.simulation.cloth()));
+
+    const StepProfile& profile = profiled.profile;
+    EXPECT_EQ(profile.steps, 40u);
+    EXPECT_EQ(profile.held_steps, profiled.held);
+    EXPECT_GT(profile.held_steps, 0u);
+    EXPECT_EQ(profile.solver_iterations, profiled.iterations);
+    EXPECT_EQ(profile.splits, profiled.splits);
+    EXPECT_GT(profile.splits, 0u);
+    EXPECT_EQ(profile.force_evaluations, profiled.simulation.force_evaluations());
+    // Every step has an integrator's step and guards that took some time; off, no clock.
+    EXPECT_GT(profile.seconds.integrate, 0.0);
+    EXPECT_GT(profile.seconds.guards, 0.0);
+    EXPECT_EQ(plain.profile.seconds.total(), 0.0);
+
+    const std::string text = app::profile_text(profile, 1.0 / 60.0, 2);
+    EXPECT_NE(text.find("profile: 40 steps of 16.67 ms on 2 threads"), std::string::npos) << text;
+    EXPECT_NE(
+        text.find("implicit solve: " + std::to_string(profile.solver_iterations) + " iterations"),
+        std::string::npos)
+        << text;
+}
+
+}  // namespace
+}  // namespace weft

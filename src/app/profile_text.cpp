@@ -21,12 +21,18 @@ std::string profile_text(const StepProfile& profile, double dt, int threads) {
         const char* name;
         double seconds;
     } phases[] = {{"integrate", profile.seconds.integrate},
+                  {"  implicit setup", profile.seconds.implicit.setup},
+                  {"  coarse levels", profile.seconds.implicit.coarse_levels},
+                  {"  CG iterations", profile.seconds.implicit.iterations},
+                  {"  split checks", profile.seconds.implicit.split_checks},
                   {"strain limit", profile.seconds.strain_limit},
                   {"contacts and hand", profile.seconds.contacts},
                   {"tearing", profile.seconds.tearing},
                   {"guards", profile.seconds.guards},
                   {"all", total}};
+    const bool implicit = profile.seconds.implicit.total() > 0.0;
     for (const auto& phase : phases) {
+        if (phase.name[0] == ' ' && !implicit) continue;  // implicit Euler's part of integrate
         std::snprintf(line, sizeof line, "  %-18s %10.4f %11.4f %6.1f %%\n", phase.name,
                       phase.seconds, phase.seconds / steps * 1e3,
                       total > 0.0 ? 100.0 * phase.seconds / total : 0.0);

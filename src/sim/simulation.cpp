@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <stdexcept>
 
 #include "sim/cloth_builder.h"
@@ -91,29 +90,6 @@ void Simulation::reset() {
     steps_taken_ = 0;
 }
 
-namespace {
-
-// Adds the wall time since the last lap to one phase of a step; reads no clock when off.
-class PhaseClock {
-  public:
-    explicit PhaseClock(bool on) : on_(on) {
-        if (on_) mark_ = Clock::now();
-    }
-    void lap(double& phase) {
-        if (!on_) return;
-        const Clock::time_point now = Clock::now();
-        phase += std::chrono::duration<double>(now - mark_).count();
-        mark_ = now;
-    }
-
-  private:
-    using Clock = std::chrono::steady_clock;
-    bool on_;
-    Clock::time_point mark_{};
-};
-
-}  // namespace
-
 StepReport Simulation::step() {
     // The grip (drag.h). An explicit step cannot answer the hand within itself: its grip is
     // judged before the step, where the hand's move would leave the springs at the hand.
@@ -144,12 +120,15 @@ StepReport Simulation::step() {
     report.times.contacts += first_try.contacts;
     report.times.tearing += first_try.tearing;
     report.times.guards += first_try.guards;
+    report.times.implicit.add(first_try.implicit);
     return report;
 }
 
 StepReport Simulation::take_step(bool judge_grip) {
     StepReport report;
     PhaseClock clock(profiling_);
+    workspace_.profiling = profiling_;
+    workspace_.implicit_times = {};
     // The hand's particles get the velocity that takes them where the hand goes (drag.h).
     // The field points at them only for the step, so a copied Simulation never holds a
     // pointer into another one.
@@ -201,6 +180,7 @@ StepReport Simulation::take_step(bool judge_grip) {
     field_.colliders = {};
     field_.solids = {};
     clock.lap(report.times.integrate);
+    report.times.implicit = workspace_.implicit_times;
     // Corrections of positions and velocities after the step; any of them makes the history
     // the Verlets carry stale.
     std::size_t corrections = 0;

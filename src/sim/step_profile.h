@@ -3,9 +3,45 @@
 // (StepProfile), which `weft --headless --profile` prints and the panel shows.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 
 namespace weft {
+
+// Implicit Euler's share of a step's integrate phase (s, wall clock), over all its pieces.
+struct ImplicitPhaseTimes {
+    double setup = 0.0;          // forces, per-spring terms, contacts held, first residual
+    double coarse_levels = 0.0;  // building the preconditioner's coarse levels
+    double iterations = 0.0;     // the conjugate-gradient iterations, coarse cycles included
+    double split_checks = 0.0;   // judging each piece's linearisation, and the copies a split
+                                 // goes back to
+    double total() const { return setup + coarse_levels + iterations + split_checks; }
+    void add(const ImplicitPhaseTimes& other) {
+        setup += other.setup;
+        coarse_levels += other.coarse_levels;
+        iterations += other.iterations;
+        split_checks += other.split_checks;
+    }
+};
+
+// Adds the wall time since the last lap to one phase; reads no clock when off.
+class PhaseClock {
+  public:
+    explicit PhaseClock(bool on) : on_(on) {
+        if (on_) mark_ = Clock::now();
+    }
+    void lap(double& phase) {
+        if (!on_) return;
+        const Clock::time_point now = Clock::now();
+        phase += std::chrono::duration<double>(now - mark_).count();
+        mark_ = now;
+    }
+
+  private:
+    using Clock = std::chrono::steady_clock;
+    bool on_;
+    Clock::time_point mark_{};
+};
 
 // One step's phases, in the order Simulation::step takes them (s, wall clock). A step taken
 // again after the cloth slipped from the hand counts both tries.
@@ -16,7 +52,8 @@ struct StepTimes {
     double strain_limit = 0.0;
     double contacts = 0.0;  // impulse contacts, self-collision and the hand's hold
     double tearing = 0.0;
-    double guards = 0.0;  // divergence, runaway-tearing and energy guards
+    double guards = 0.0;          // divergence, runaway-tearing and energy guards
+    ImplicitPhaseTimes implicit;  // part of integrate, by implicit Euler
     double total() const { return integrate + strain_limit + contacts + tearing + guards; }
 };
 
@@ -42,6 +79,7 @@ struct StepProfile {
         seconds.contacts += times.contacts;
         seconds.tearing += times.tearing;
         seconds.guards += times.guards;
+        seconds.implicit.add(times.implicit);
         force_evaluations += force_evaluations_added;
         solver_iterations += static_cast<std::uint64_t>(iterations);
         most_iterations = iterations > most_iterations ? iterations : most_iterations;

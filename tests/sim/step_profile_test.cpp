@@ -1,5 +1,5 @@
-// The step's profile (step_profile.h): it counts what the run did, it reads no clock when off,
-// and it never changes a bit of the state.
+// The step's profile (step_profile.h): it counts what the run did, its phases nest, it reads no
+// clock when off, and it never changes a bit of the state.
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
@@ -70,6 +70,10 @@ TEST(StepProfile, CountsWhatTheStepsDidAndChangesNoBit) {
     // Every step has an integrator's step and guards that took some time; off, no clock.
     EXPECT_GT(profile.seconds.integrate, 0.0);
     EXPECT_GT(profile.seconds.guards, 0.0);
+    // Implicit Euler's phases are disjoint intervals inside the integrate phase's.
+    EXPECT_GT(profile.seconds.implicit.iterations, 0.0);
+    EXPECT_GT(profile.seconds.implicit.split_checks, 0.0);
+    EXPECT_LE(profile.seconds.implicit.total(), profile.seconds.integrate);
     EXPECT_EQ(plain.profile.seconds.total(), 0.0);
 
     const std::string text = app::profile_text(profile, 1.0 / 60.0, 2);

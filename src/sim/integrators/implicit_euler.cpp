@@ -128,6 +128,8 @@ int step_or_split(Cloth& cloth, const ForceField& field, double dt, IntegratorWo
                   int depth) {
     const ImplicitSolveSettings& settings = work.implicit_settings;
     const bool may_split = depth < settings.max_split_depth && settings.split_stretch_ratio > 1.0;
+    PhaseClock clock(work.profiling);
+    double timed_inside = 0.0;  // the linearised step times its own phases
     if (may_split) {
         work.implicit_step_start_positions.resize(cloth.particle_count());
         work.implicit_step_start_velocities.resize(cloth.particle_count());
@@ -138,19 +140,24 @@ int step_or_split(Cloth& cloth, const ForceField& field, double dt, IntegratorWo
                       work.implicit_step_start_velocities.begin() + begin);
         });
     }
+    clock.lap(work.implicit_times.split_checks);
     const int iterations_before = work.implicit_last_iterations;
     take_linearised_step(cloth, field, dt, work);
     work.implicit_last_iterations += iterations_before;
-    if (!may_split || !some_spring_longer_than(cloth, settings.split_stretch_ratio, work.pool) ||
-        !(largest_linearisation_error(cloth, work.implicit_step_start_positions,
-                                      settings.split_stretch_ratio,
-                                      work.pool) > settings.split_force_error))
-        return depth;
+    clock.lap(timed_inside);
+    const bool kept = !may_split ||
+                      !some_spring_longer_than(cloth, settings.split_stretch_ratio, work.pool) ||
+                      !(largest_linearisation_error(cloth, work.implicit_step_start_positions,
+                                                    settings.split_stretch_ratio,
+                                                    work.pool) > settings.split_force_error);
+    clock.lap(work.implicit_times.split_checks);
+    if (kept) return depth;
     ++work.implicit_last_splits;
     std::copy(work.implicit_step_start_positions.begin(), work.implicit_step_start_positions.end(),
               cloth.positions.begin());
     std::copy(work.implicit_step_start_velocities.begin(),
               work.implicit_step_start_velocities.end(), cloth.velocities.begin());
+    clock.lap(work.implicit_times.split_checks);
     const int first = step_or_split(cloth, field, 0.5 * dt, work, depth + 1);
     return std::max(first, step_or_split(cloth, field, 0.5 * dt, work, depth + 1));
 }
@@ -177,7 +184,7 @@ namespace {
 void take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
                           IntegratorWorkspace& work) {
     if (step_implicit_euler_grid(cloth, field, dt, work.implicit_settings, work.implicit_grid,
-                                 work.pool)) {
+                                 work.pool, work.profiling ? &work.implicit_times : nullptr)) {
         ++work.force_evaluations;
         work.implicit_last_iterations = work.implicit_grid.last_iterations;
         work.implicit_last_relative_residual = work.implicit_grid.last_relative_residual;

@@ -133,11 +133,14 @@ void ImplicitGridSolver::bind() {
 
 bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
                               const ImplicitSolveSettings& settings, ImplicitGridSolver& solver,
-                              WorkerPool* pool) {
+                              WorkerPool* pool, ImplicitPhaseTimes* times) {
     if (!structured_implicit_solve() || !field.colliders.empty() || !grid_stencil_usable(cloth))
         return false;
     if (cloth.topology().grid_stencil.directions.size() > implicit_kernel::max_directions)
         return false;
+    ImplicitPhaseTimes unused;
+    ImplicitPhaseTimes& phases = times ? *times : unused;
+    PhaseClock clock(times != nullptr);
     solver.prepare(cloth.rows, cloth.cols);
     implicit_kernel::Job& job = solver.job;
     // f(x0, v = 0): gravity, the wind's push and the elastic springs; the dampers are
@@ -218,6 +221,7 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     auto solve = [&](bool first_round) {
         ImplicitMultilevel::detach(job);
         over_rows(solver, pool, [&](int begin, int end) { residual(job, begin, end, row_sums); });
+        clock.lap(phases.setup);
         double r_z = sum_rows(row_sums.first, rows);
         r_r = sum_rows(row_sums.second, rows);
         double largest_z = largest_of_rows(row_sums.largest, rows);
@@ -229,6 +233,7 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
                 solver.multilevel.weight = settings.coarse_weight;
                 solver.multilevel.smoothing = settings.coarse_smoothing;
                 solver.multilevel.build(job, pool);
+                clock.lap(phases.coarse_levels);
             }
             r_z += solver.multilevel.apply(job, false, pool);
             solver.multilevel.attach(job);
@@ -260,6 +265,7 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
             r_z = next_r_z;
             ++iteration;
         }
+        clock.lap(phases.iterations);
     };
     solve(true);
     if (job.has_contacts) {
@@ -278,6 +284,7 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     }
     solver.last_iterations = iteration;
     solver.last_relative_residual = scale > 0.0 ? std::sqrt(r_r) / scale : 0.0;
+    clock.lap(phases.setup);  // the contacts' impulses and friction, when there are any
 
     // v1 = the solution, x1 = x0 + h v1; pinned particles stay where they are, held ones go
     // where the hand takes them.
@@ -298,6 +305,7 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
             }
         }
     });
+    clock.lap(phases.setup);
     solver.has_previous_change = true;
     return true;
 }

@@ -20,6 +20,7 @@
 #include "sim/implicit_grid_kernel.h"
 #include "sim/integrators/implicit_contacts.h"
 #include "sim/integrators/implicit_multilevel.h"
+#include "sim/step_profile.h"
 
 namespace weft {
 
@@ -100,10 +101,11 @@ struct ImplicitGridSolver {
 // One implicit Euler step of the structured solve, or false, touching nothing, when it
 // cannot take it: no usable grid stencil, or repulsion contacts (forces the general path
 // takes explicitly). Particles about to meet the field's impulse solids are held on their
-// surfaces inside the solve (implicit_contacts.h).
+// surfaces inside the solve (implicit_contacts.h). `times`, when given, gains the step's
+// phases.
 bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
                               const ImplicitSolveSettings& settings, ImplicitGridSolver& solver,
-                              WorkerPool* pool);
+                              WorkerPool* pool, ImplicitPhaseTimes* times = nullptr);
 
 // Turns the structured solve off (tests and studies compare it with the general path).
 void set_structured_implicit_solve(bool enabled);

@@ -14,6 +14,7 @@
 #include "sim/grid_force_pass.h"
 #include "sim/integrators/implicit_grid_solve.h"
 #include "sim/scene.h"
+#include "sim/step_profile.h"
 
 namespace weft {
 
@@ -59,6 +60,9 @@ struct IntegratorWorkspace {
     int implicit_last_iterations = 0;  // over all the pieces of a split step
     int implicit_last_splits = 0;      // times the last step was halved (implicit_euler.cpp)
     int implicit_start_depth = 0;      // the next step starts as 2^depth pieces (ditto)
+    // When the caller profiles the step: implicit Euler's phases, summed over its pieces.
+    bool profiling = false;
+    ImplicitPhaseTimes implicit_times;
     // The start of the step being taken, for a split to go back to (sized on first use).
     std::vector<Vec3> implicit_step_start_positions, implicit_step_start_velocities;
     double implicit_last_relative_residual = 0.0;

@@ -14,6 +14,7 @@
 #include "app/atomic_file.h"
 #include "app/panel_sections.h"
 #include "app/panel_widgets.h"
+#include "app/profile_text.h"
 #include "app/screenshot_names.h"
 #include "app/session_record.h"
 #include "app/status_text.h"
@@ -167,6 +168,16 @@ void optional_feature(DemoState& state, const char* label, SceneKey key,
         edit(state, {key, v});
     refusal_below(path);
     ImGui::PopID();
+}
+
+// Where the main run's steps went over about the last second, as --profile prints a run's.
+void profile_section(const DemoState& state) {
+    const StepProfile& recent = state.statistics.recent_profile;
+    if (recent.steps == 0) {
+        ImGui::TextDisabled("no steps in the last second");
+        return;
+    }
+    ImGui::TextUnformatted(profile_panel_text(recent).c_str());
 }
 
 void save(DemoState& state) {
@@ -388,6 +399,8 @@ bool draw_control_panel(DemoState& state, const ScreenRect& area) {
     if (ImGui::CollapsingHeader("record and replay")) session(state);
     if (ImGui::CollapsingHeader("view")) view_toggles(state);
     if (ImGui::CollapsingHeader("save scene")) save(state);
+    // Last: opened, it pushes nothing else down.
+    if (ImGui::CollapsingHeader("step profile")) profile_section(state);
     ImGui::PopStyleColor();
     ImGui::PopStyleVar();
     ImGui::PopTextWrapPos();

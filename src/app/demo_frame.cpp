@@ -24,6 +24,11 @@ void DemoState::measure_frame(int steps) {
                                    : std::string();
     statistics.plots.add_frame(steps, energy, statistics.stretch_ratio,
                                statistics.sim_seconds + statistics.raster_seconds);
+    if (recovery.profiling && wall_now - statistics.profile_mark_wall >= 1.0) {
+        statistics.recent_profile = recovery.profile.since(statistics.profile_mark);
+        statistics.profile_mark = recovery.profile;
+        statistics.profile_mark_wall = wall_now;
+    }
 }
 
 void DemoState::toggle_pause() {

@@ -36,6 +36,11 @@ struct DemoStatistics {
     double stretch_ratio = 0.0;
     std::string stretch_place;  // where that spring is (stretch_place_text)
     FramePlots plots;  // energy, largest stretch and work per frame, over frames that stepped
+    // The main run's step profile (Recovery::profile) over about the last second of wall
+    // time, for the panel: renewed once a second from a copy taken the second before.
+    StepProfile recent_profile;
+    StepProfile profile_mark;
+    double profile_mark_wall = 0.0;  // s, wall_now when profile_mark was taken
 };
 
 // How a message on screen reads at a glance, by its colour: news that something worked must

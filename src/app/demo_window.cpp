@@ -496,6 +496,7 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
     }
     DemoState state(path, command_line.overrides, *scene);
     state.captures = captures_folder();
+    state.recovery.profiling = true;  // the panel's step profile
     for (const CommandLine::Comparison& comparison : command_line.comparisons)
         state.add_companion(*integrator_from_name(comparison.integrator),
                             comparison.dt > 0.0 ? comparison.dt : scene->solver.dt);

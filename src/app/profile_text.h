@@ -10,5 +10,8 @@ namespace weft::app {
 
 // `dt`: the run's step (s), `threads`: the step's worker threads.
 std::string profile_text(const StepProfile& profile, double dt, int threads);
+// The same, narrow enough for the panel: ms a step and share per phase, and the counters a
+// step.
+std::string profile_panel_text(const StepProfile& profile);
 
 }  // namespace weft::app

@@ -86,6 +86,27 @@ struct StepProfile {
         splits += static_cast<std::uint64_t>(step_splits);
         most_splits = step_splits > most_splits ? step_splits : most_splits;
     }
+    // What was added since `earlier`, a copy of this profile taken before (the largest
+    // counts in one step stay this profile's: since the run began).
+    StepProfile since(const StepProfile& earlier) const {
+        StepProfile part = *this;
+        part.steps -= earlier.steps;
+        part.held_steps -= earlier.held_steps;
+        part.slips -= earlier.slips;
+        part.seconds.integrate -= earlier.seconds.integrate;
+        part.seconds.strain_limit -= earlier.seconds.strain_limit;
+        part.seconds.contacts -= earlier.seconds.contacts;
+        part.seconds.tearing -= earlier.seconds.tearing;
+        part.seconds.guards -= earlier.seconds.guards;
+        part.seconds.implicit.setup -= earlier.seconds.implicit.setup;
+        part.seconds.implicit.coarse_levels -= earlier.seconds.implicit.coarse_levels;
+        part.seconds.implicit.iterations -= earlier.seconds.implicit.iterations;
+        part.seconds.implicit.split_checks -= earlier.seconds.implicit.split_checks;
+        part.force_evaluations -= earlier.force_evaluations;
+        part.solver_iterations -= earlier.solver_iterations;
+        part.splits -= earlier.splits;
+        return part;
+    }
 };
 
 }  // namespace weft

@@ -19,6 +19,8 @@ struct LiftedSheet {
     Simulation simulation;
     StepProfile profile;
     std::uint64_t iterations = 0, splits = 0, held = 0;
+    StepProfile at_step_20;  // the profile as it was after 20 steps
+    std::uint64_t iterations_after_20 = 0;
     explicit LiftedSheet(bool profiling)
         : simulation(*load_scene_file(WEFT_SOURCE_DIR "/assets/scenes/cloth_128.toml",
                                       {"cloth.rows=32", "cloth.cols=32",
@@ -49,6 +51,10 @@ struct LiftedSheet {
             profile.add(report.times, report.held, report.hand_slipped,
                         simulation.force_evaluations() - evaluations,
                         simulation.last_linear_solve().iterations, simulation.last_step_splits());
+            if (step == 19) at_step_20 = profile;
+            if (step >= 20)
+                iterations_after_20 +=
+                    static_cast<std::uint64_t>(simulation.last_linear_solve().iterations);
         }
     }
 };
@@ -75,6 +81,18 @@ TEST(StepProfile, CountsWhatTheStepsDidAndChangesNoBit) {
     EXPECT_GT(profile.seconds.implicit.split_checks, 0.0);
     EXPECT_LE(profile.seconds.implicit.total(), profile.seconds.integrate);
     EXPECT_EQ(plain.profile.seconds.total(), 0.0);
+
+    // The panel's last second: what was added since a copy taken before.
+    const StepProfile later = profile.since(profiled.at_step_20);
+    EXPECT_EQ(later.steps, 20u);
+    EXPECT_EQ(later.solver_iterations, profiled.iterations_after_20);
+    EXPECT_NEAR(later.seconds.total() + profiled.at_step_20.seconds.total(),
+                profile.seconds.total(), 1e-12);
+    const std::string panel = app::profile_panel_text(later);
+    EXPECT_EQ(
+        panel.rfind("20 steps, " + std::to_string(later.held_steps) + " held by the hand\n", 0), 0u)
+        << panel;
+    EXPECT_NE(panel.find("a step: "), std::string::npos) << panel;
 
     const std::string text = app::profile_text(profile, 1.0 / 60.0, 2);
     EXPECT_NE(text.find("profile: 40 steps of 16.67 ms on 2 threads"), std::string::npos) << text;

@@ -34,8 +34,14 @@ int run_replay_study(const ReplayOptions& options) {
     }
     std::filesystem::create_directories(options.out_dir);
     const std::string csv_path = options.out_dir + "/replay.csv";
-    CsvFile csv(csv_path, {"integrator", "recorded", "matches_recording", "recoveries",
-                           "final_dt_s", "final_energy_J", "largest_stretch", "cpu_seconds"});
+    // With each run's step profile (step_profile.h): seconds in each phase, over all steps.
+    CsvFile csv(csv_path,
+                {"integrator",      "recorded",        "matches_recording", "recoveries",
+                 "final_dt_s",      "final_energy_J",  "largest_stretch",   "cpu_seconds",
+                 "steps",           "held_steps",      "integrate_s",       "implicit_setup_s",
+                 "coarse_levels_s", "cg_iterations_s", "split_checks_s",    "strain_limit_s",
+                 "contacts_s",      "tearing_s",       "guards_s",          "force_evaluations",
+                 "cg_iterations",   "splits"});
     if (!csv.is_open()) {
         std::fprintf(stderr, "error: %s: cannot write\n", csv_path.c_str());
         return 2;
@@ -67,11 +73,13 @@ int run_replay_study(const ReplayOptions& options) {
         std::fflush(stdout);
         const SceneLoadResult scene = load_scene_text(run.scene_toml, "replayed scene");
         app::DemoState state(options.session_path, {}, *scene.scene);
+        state.recovery.profiling = true;
         state.start_replay(run);
         const double seconds = seconds_of([&] {
             while (!state.replay_finished() && !stop_requested) state.step(4096);
         });
         const bool matches = state.replay_matches();
+        const StepProfile& profile = state.recovery.profile;
         const double energy =
             measure_energy(state.simulation.cloth(), state.simulation.force_field()).total();
         const double stretch = largest_stretch_ratio(state.simulation.cloth());
@@ -83,10 +91,28 @@ int run_replay_study(const ReplayOptions& options) {
                                    : "",
             app::counted(state.recovery.recoveries, "recovery", "recoveries").c_str(),
             state.simulation.dt() * 1e3, energy, stretch, seconds);
-        csv.write_row({integrator_name(integrator), integrator == recorded ? "yes" : "no",
+        csv.write_row({integrator_name(integrator),
+                       integrator == recorded ? "yes" : "no",
                        integrator == recorded ? (matches ? "yes" : "no") : "",
-                       std::to_string(state.recovery.recoveries), cell(state.simulation.dt()),
-                       cell(energy), cell(stretch), cell(seconds)});
+                       std::to_string(state.recovery.recoveries),
+                       cell(state.simulation.dt()),
+                       cell(energy),
+                       cell(stretch),
+                       cell(seconds),
+                       std::to_string(profile.steps),
+                       std::to_string(profile.held_steps),
+                       cell(profile.seconds.integrate),
+                       cell(profile.seconds.implicit.setup),
+                       cell(profile.seconds.implicit.coarse_levels),
+                       cell(profile.seconds.implicit.iterations),
+                       cell(profile.seconds.implicit.split_checks),
+                       cell(profile.seconds.strain_limit),
+                       cell(profile.seconds.contacts),
+                       cell(profile.seconds.tearing),
+                       cell(profile.seconds.guards),
+                       std::to_string(profile.force_evaluations),
+                       std::to_string(profile.solver_iterations),
+                       std::to_string(profile.splits)});
         if (integrator == recorded && !matches) status = 4;
     }
     std::printf("wrote %s\n", csv_path.c_str());

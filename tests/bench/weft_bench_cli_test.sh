@@ -87,6 +87,13 @@ csv=$work/replay/replay.csv
 check "replay CSV header" grep -q '^integrator,recorded,matches_recording,recoveries,' "$csv"
 check "one row per integrator" test "$(tail -n +2 "$csv" | wc -l)" -eq 6
 check "the recorded integrator reproduces the recording" grep -q '^symplectic-euler,yes,yes,0,' "$csv"
+# The step profile's columns: implicit Euler counts its CG iterations (column 21); the
+# explicit methods have none.
+check "replay CSV: the step profile's columns" \
+  grep -q ',force_evaluations,cg_iterations,splits$' "$csv"
+check "replay CSV: implicit Euler's iterations are counted, symplectic Euler's are 0" \
+  awk -F, '$1 == "implicit-euler" { i = $21 } $1 == "symplectic-euler" { s = $21 }
+           END { exit !(i > 0 && s == 0) }' "$csv"
 expect 2 'error: .*missing.toml: cannot read' -- replay "$work/missing.toml" --out "$work/replay2"
 expect 2 '^error: replay takes one recorded session' -- replay --out "$work/replay3"
 

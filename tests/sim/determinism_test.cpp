@@ -147,7 +147,7 @@ TEST(Determinism, TheDrapesContactsOnTheFusedStepsRowsGiveTheSeparatePassesBits)
     // rows it has just stepped (simulation.cpp, OnSteppedRows); without it, the step, the
     // contacts and self-collision's measure are three passes. Same state, same contacts.
     auto run = [](bool fused) {
-        set_fused_grid_steps(fused);
+        const testing::FusedGridSteps steps(fused);
         SceneLoadResult loaded =
             load_scene_file(WEFT_SOURCE_DIR "/assets/scenes/drape_self_collision_64.toml");
         EXPECT_TRUE(loaded.ok());
@@ -159,7 +159,6 @@ TEST(Determinism, TheDrapesContactsOnTheFusedStepsRowsGiveTheSeparatePassesBits)
             if (report.diverged()) break;
             contacts += report.contacts;
         }
-        set_fused_grid_steps(true);
         return std::pair{hash_state(simulation.cloth()), contacts};
     };
     const auto fused = run(true);

@@ -12,6 +12,7 @@
 #include "sim/force_pass.h"
 #include "sim/grid_force_pass.h"
 #include "sim/topology_edits.h"
+#include "test_scenes.h"
 
 namespace weft {
 namespace {
@@ -148,15 +149,16 @@ TEST(GridForcePass, EveryKernelBuildGivesTheSameBits) {
     if (supported_simd_level() == SimdLevel::baseline) GTEST_SKIP() << "no AVX2 on this CPU";
     Cloth cloth = build_grid_cloth(grid_scene(33, 29));
     scramble(cloth, 13);
-    const SimdLevel before = simd_level();
-    set_simd_level(SimdLevel::baseline);
-    const std::vector<Vec3> baseline = forces_of(cloth, windy_field());
+    std::vector<Vec3> baseline;
+    {
+        const testing::KernelBuild build(SimdLevel::baseline);
+        baseline = forces_of(cloth, windy_field());
+    }
     for (SimdLevel level : {SimdLevel::avx2, SimdLevel::avx512}) {
         if (level > supported_simd_level()) continue;
-        set_simd_level(level);
+        const testing::KernelBuild build(level);
         EXPECT_TRUE(same_bits(forces_of(cloth, windy_field()), baseline)) << simd_level_name(level);
     }
-    set_simd_level(before);
 }
 
 TEST(GridForcePass, OverstretchTestFlagsOnlyLiveSpringsPastTheRatio) {
@@ -189,10 +191,9 @@ TEST(GridForcePass, StretchHeadroomIsTheSpringBySpringMinimum) {
             headroom = std::min(headroom, ratio * spring.rest_length - length);
             scale = std::max(scale, ratio * spring.rest_length);
         }
-    const SimdLevel before = simd_level();
     for (SimdLevel level : {SimdLevel::baseline, SimdLevel::avx2, SimdLevel::avx512}) {
         if (level > supported_simd_level()) continue;
-        set_simd_level(level);
+        const testing::KernelBuild build(level);
         for (int threads : {1, 2, 3}) {
             WorkerPool pool(threads);
             const auto grid = grid_stretch_headroom(cloth, ratio, &pool);
@@ -202,7 +203,6 @@ TEST(GridForcePass, StretchHeadroomIsTheSpringBySpringMinimum) {
             EXPECT_EQ(grid->maybe_longer, *grid_springs_maybe_longer_than(cloth, ratio, &pool));
         }
     }
-    set_simd_level(before);
     // Past the ratio: flagged, and the headroom negative.
     cloth.positions[35] += Vec3(0.0, 0.0, 2.0);
     const auto far = grid_stretch_headroom(cloth, ratio, nullptr);

@@ -19,6 +19,7 @@
 #include "sim/simulation.h"
 #include "sim/state_hash.h"
 #include "sim/topology_edits.h"
+#include "test_scenes.h"
 
 namespace weft {
 namespace {
@@ -48,11 +49,10 @@ constexpr double step_dt = 2e-4;  // s
 
 // The separate path: the force pass, then step_symplectic_euler's own loop.
 Cloth separately_stepped(Cloth cloth, const ForceField& field) {
-    set_fused_grid_steps(false);
+    const testing::FusedGridSteps separate(false);
     IntegratorWorkspace work;
     work.resize(cloth.particle_count(), Integrator::symplectic_euler);
     step_symplectic_euler(cloth, field, step_dt, work);
-    set_fused_grid_steps(true);
     return cloth;
 }
 
@@ -125,10 +125,9 @@ TEST(FusedGridStep, ItsSweepFindsWhatTheSeparateSweepFinds) {
 // that moved the limit or more, in any direction, and none that moved under 1/√3 of it.
 TEST(FusedGridStep, ItsSweepFlagsEveryParticleThatMovedTheLimitAndNoneUnderAThirdOfIt) {
     const double limit = 0.01;  // m
-    const SimdLevel before = simd_level();
     for (SimdLevel level : {SimdLevel::baseline, SimdLevel::avx2, SimdLevel::avx512}) {
         if (level > supported_simd_level()) continue;
-        set_simd_level(level);
+        const testing::KernelBuild build(level);
         int cases = 0;
         for (int i = 0; i < 400; ++i) {
             // Directions spread over the sphere, diagonals included (the hardest case: each
@@ -159,7 +158,6 @@ TEST(FusedGridStep, ItsSweepFlagsEveryParticleThatMovedTheLimitAndNoneUnderAThir
         }
         EXPECT_GT(cases, 100) << simd_level_name(level);
     }
-    set_simd_level(before);
 }
 
 // Repulsion contacts are forces the pass does not compute: it declines the step and leaves
@@ -186,14 +184,13 @@ std::pair<std::uint64_t, std::string> run(const char* scene_file,
                                           std::vector<std::string> overrides, bool fused) {
     SceneLoadResult loaded = load_scene_file(scene_file, overrides);
     EXPECT_TRUE(loaded.ok()) << loaded.error->message();
-    set_fused_grid_steps(fused);
+    const testing::FusedGridSteps steps(fused);
     Simulation simulation(*loaded.scene);
     std::string verdict;
     for (int s = 0; s < 1500 && verdict.empty(); ++s) {
         const StepReport report = simulation.step();
         if (report.diverged()) verdict = *report.divergence + " at step " + std::to_string(s);
     }
-    set_fused_grid_steps(true);
     return {hash_state(simulation.cloth()), verdict};
 }
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "sim/grid_force_pass.h"
+#include "test_scenes.h"
 
 namespace weft::testing {
 
@@ -24,16 +25,17 @@ void expect_same_bits_on_any_thread_count(HashOf hash_of) {
 template <class HashOf>
 void expect_same_bits_on_every_kernel_build(HashOf hash_of) {
     if (supported_simd_level() == SimdLevel::baseline) GTEST_SKIP() << "no AVX2 on this CPU";
-    const SimdLevel before = simd_level();
-    set_simd_level(SimdLevel::baseline);
-    const std::uint64_t baseline = hash_of();
+    std::uint64_t baseline = 0;
+    {
+        const KernelBuild build(SimdLevel::baseline);
+        baseline = hash_of();
+    }
     ASSERT_NE(baseline, 0u);
     for (SimdLevel level : {SimdLevel::avx2, SimdLevel::avx512}) {
         if (level > supported_simd_level()) continue;
-        set_simd_level(level);
+        const KernelBuild build(level);
         EXPECT_EQ(hash_of(), baseline) << simd_level_name(level);
     }
-    set_simd_level(before);
 }
 
 }  // namespace weft::testing

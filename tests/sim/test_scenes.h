@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "sim/grid_force_pass.h"
 #include "sim/scene.h"
 #include "sim/simulation.h"
 
@@ -23,6 +24,32 @@ struct GeneralImplicitPath {
     ~GeneralImplicitPath() { set_structured_implicit_solve(true); }
     GeneralImplicitPath(const GeneralImplicitPath&) = delete;
     GeneralImplicitPath& operator=(const GeneralImplicitPath&) = delete;
+};
+
+// While alive, the grid steps are fused or not, as asked; then back to what they were, also
+// when an assertion leaves the test early.
+struct FusedGridSteps {
+    explicit FusedGridSteps(bool fused) : before_(fused_grid_steps()) {
+        set_fused_grid_steps(fused);
+    }
+    ~FusedGridSteps() { set_fused_grid_steps(before_); }
+    FusedGridSteps(const FusedGridSteps&) = delete;
+    FusedGridSteps& operator=(const FusedGridSteps&) = delete;
+
+  private:
+    bool before_;
+};
+
+// While alive, the grid kernels run the build of `level` (clamped to the CPU's); then the
+// level they had, also when an assertion leaves the test early.
+struct KernelBuild {
+    explicit KernelBuild(SimdLevel level) : before_(simd_level()) { set_simd_level(level); }
+    ~KernelBuild() { set_simd_level(before_); }
+    KernelBuild(const KernelBuild&) = delete;
+    KernelBuild& operator=(const KernelBuild&) = delete;
+
+  private:
+    SimdLevel before_;
 };
 
 // A vertical chain of `particles` grid particles (one column, the top one pinned), released

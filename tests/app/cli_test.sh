@@ -157,6 +157,9 @@ expect 2 '^error: --profile: only applies with --headless' -- "$scenes/hanging_s
 # states of the integrators, the hand and tearing as they ship. A change of the numbers
 # that is meant shows here, and the session's hash is renewed with it.
 for session in "$scenes"/../sessions/*.toml; do
+  # The 256² sessions take most of a minute each, longer under the sanitizers: they are the
+  # real-time measurements' (docs/performance.md), replayed by hand.
+  case "$(basename "$session")" in cloth_256_*) continue ;; esac
   check "$(basename "$session") reproduces its recording" \
     bash -c "timeout 120 '$weft' --headless --replay '$session' 2>/dev/null | grep -q 'matches the recording'"
 done

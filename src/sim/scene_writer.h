@@ -1,7 +1,7 @@
 // Scene writing: a Scene as the TOML text the loader reads back to the same Scene, every
-// number to the last bit. The demo saves its current parameters through this; the panel's
-// live edits are checked by writing the scene, overriding one key and loading it again, so
-// they pass exactly the checks a scene file does (scene_loader.h).
+// number to the last bit. The demo saves its current parameters through this, and sessions
+// record their scene with it. (The panel's live edits are typed edits, checked by the same
+// rules as a scene file's values: scene_edit.h, scene_rules.h.)
 #pragma once
 
 #include <string>

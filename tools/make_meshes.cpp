@@ -169,7 +169,7 @@ int main(int argc, char** argv) {
         "\n"
         "Writes the shipped meshes (skirt.obj, flag_with_hole.obj, round_tablecloth.obj) into\n"
         "DIRECTORY; --check only compares them with the files there (status 1 if they differ).\n";
-    // Every program answers --help and --version (issue 18), this one too.
+    // Every program answers --help and --version, this one too.
     const std::string first = argc == 2 ? argv[1] : "";
     if (first == "--help" || first == "-h") {
         std::cout << usage;

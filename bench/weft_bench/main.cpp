@@ -217,7 +217,7 @@ int main(int argc, char** argv) {
     }
     if (study == "realtime") {
         if (scenes.size() > 1) return usage("realtime takes one scene");
-        // The cloth-like material of issue 17 where it has landed, else the large sheet.
+        // The cloth-like material where it has landed, else the large sheet.
         const std::string cloth_like = scenes_dir + "/cloth_128.toml";
         const std::string scene = !scenes.empty() ? scenes[0]
                                   : std::filesystem::exists(cloth_like)

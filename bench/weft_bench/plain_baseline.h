@@ -5,9 +5,9 @@
 // speed-up is a ratio that holds on a noisy machine.
 //
 // In double (PlainCloth, the throughput study's baseline) and in float (PlainFloatCloth):
-// the float step is what most people write, and issue 17 measured it at about half the
-// double one's time, so it, not the double baseline, is the fair "what a user writes" to hold
-// weft's step against (the realtime study does).
+// the float step is what most people write, and it was measured at about half the double one's
+// time, so it, not the double baseline, is the fair "what a user writes" to hold weft's step
+// against (the realtime study does).
 #pragma once
 
 #include <vector>

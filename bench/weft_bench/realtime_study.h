@@ -1,4 +1,4 @@
-// weft-bench realtime: speed against error at the 60 fps frame budget (issue 17, item 5).
+// weft-bench realtime: speed against error at the 60 fps frame budget.
 // For sheets of one material at several sizes, each method at a few settings: the CPU time
 // of one simulated 1/60 s frame, whether that and drawing the frame at 1280x720 fit in
 // 1/60 s, the error against a converged reference of the same sheet, and the largest

@@ -276,8 +276,8 @@ int run_throughput_study(const ThroughputOptions& options) {
                        "speed-up over plain baseline " + cell(speed_up_single)});
         series.back().points.push_back({particles, plain_seconds});
 
-        // Self-collision (issue 7): the same step with a [self_collision] pass of half a
-        // spacing's thickness, against the same sheet without it.
+        // Self-collision: the same step with a [self_collision] pass of half a spacing's
+        // thickness, against the same sheet without it.
         {
             Scene colliding = scene;
             colliding.self_collision_thickness = 0.5 * scene.cloth.spacing;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/atomic_file.h"
+#include "app/captures_folder.h"
 #include "app/panel_sections.h"
 #include "app/panel_widgets.h"
 #include "app/profile_text.h"
@@ -260,12 +261,17 @@ void session(DemoState& state) {
                 .c_str(),
             counted(static_cast<long long>(state.steps_run), "step", "steps").c_str());
         if (ImGui::Button("stop and save (F5)")) {
+            // Where the F5 key saves it: the captures folder, never the working folder.
             const SessionRecord record = state.stop_recording();
-            const std::string path = next_free_path(".", "weft-session", "toml");
             std::string error;
-            status = write_file_atomically(path, session_to_toml(record), false, error)
-                         ? "saved " + path
-                         : error;
+            if (!make_captures_folder(state.captures, error)) {
+                status = error;
+            } else {
+                const std::string path = next_free_path(state.captures, "weft-session", "toml");
+                status = write_file_atomically(path, session_to_toml(record), false, error)
+                             ? "saved " + path
+                             : error;
+            }
         }
     } else if (ImGui::Button("record (F5; restarts the scene)")) {
         state.start_recording();
@@ -350,8 +356,8 @@ void scenes(DemoState& state) {
 
 bool draw_control_panel(DemoState& state, const ScreenRect& area) {
     // Docked where the layout puts it, its height the window's: what does not fit scrolls
-    // inside the panel instead of running off the window (issue 18, item 2). The title bar's
-    // arrow folds it to a strip, and the view takes the window.
+    // inside the panel instead of running off the window. The title bar's arrow folds it to a
+    // strip, and the view takes the window.
     ImGui::SetNextWindowPos(ImVec2(area.x, area.y), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(area.width, area.height), ImGuiCond_Always);
     // No background: a blended rectangle the size of the panel, every frame, in SDL's software

@@ -1,8 +1,7 @@
 // The panel's answer to its last edit: which control made it and, when the scene loader
-// refused the value, why. The panel draws the refusal right under that control, wrapped to
-// the panel's width, until the next edit (issue 18, item 3: written at the panel's foot, a
-// refusal sat below the visible area, cut off, and the value just snapped back).
-// ImGui-free, so the rule is tested.
+// refused the value, why. The panel draws the refusal right under that control, wrapped to the
+// panel's width, until the next edit (written at the panel's foot, a refusal sat below the
+// visible area, cut off, and the value just snapped back). ImGui-free, so the rule is tested.
 #pragma once
 
 #include <optional>

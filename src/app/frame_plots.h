@@ -1,7 +1,7 @@
 // The HUD's plots: total energy, largest stretch and milliseconds of work per frame, one
 // sample for each frame that stepped. A paused frame adds none, so every plot holds still
-// while paused instead of scrolling a flat line through time that did not pass (issue 18:
-// the energy plot scrolled while paused). ImGui-free, so it is tested; the panel draws them.
+// while paused instead of scrolling a flat line through time that did not pass (the energy
+// plot used to scroll while paused). ImGui-free, so it is tested; the panel draws them.
 #pragma once
 
 #include <cstddef>

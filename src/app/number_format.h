@@ -1,7 +1,7 @@
-// How the panel writes a number: with enough significant digits that a light particle's
-// mass (0.00407 g) or a small damping (0.00025 N s/m) reads as itself, not "0.00" or
-// "0.0003" (issue 18: a fixed "%.2f" or "%.4f" rounded them away). ImGui-free, so it is
-// tested; the panel hands the format to its sliders.
+// How the panel writes a number: with enough significant digits that a light particle's mass
+// (0.00407 g) or a small damping (0.00025 N s/m) reads as itself, not "0.00" or "0.0003" (a
+// fixed "%.2f" or "%.4f" rounded them away). ImGui-free, so it is tested; the panel hands the
+// format to its sliders.
 #pragma once
 
 #include <string>

@@ -12,8 +12,7 @@ struct ScreenRect {
 };
 
 // The window's two parts. The view is the camera's viewport, where side by side's columns,
-// their labels and the status lines go: nothing of the cloth is ever drawn under the panel
-// (issue 18, items 2 and 4).
+// their labels and the status lines go: nothing of the cloth is ever drawn under the panel.
 struct WindowLayout {
     ScreenRect panel;  // the parameter panel, from the top of the window to its bottom
     ScreenRect view;   // the 3D view: the rest of the window

@@ -15,7 +15,7 @@
 namespace weft::app {
 
 // The view's columns, in the window: they share the view beside the panel, not the window,
-// so no run is drawn under the panel (issue 18, item 4).
+// so no run is drawn under the panel.
 struct Columns {
     int count = 1;      // runs shown
     int width = 1;      // px, of each column; an uneven split leaves the last pixels background

@@ -1,6 +1,6 @@
 // Lone springs: springs with no intact triangle along them, which the shaded surface does not
 // show. After a cut or a tear a piece of cloth can hang by one such spring; drawn as a thin
-// line, it no longer seems to float (issue 18, item 9).
+// line, it no longer seems to float.
 #pragma once
 
 #include <span>

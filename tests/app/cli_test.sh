@@ -34,8 +34,8 @@ check "headless without a scene runs the default" cmp -s "$work/default.csv" "$w
 # Divergence: explicit Euler on the stiff sheet without damping blows up -> status 3.
 expect 3 '^diverged at t=[0-9.]+: ' -- --headless "$scenes/stiff_sheet.toml" --steps 1000 \
   --set solver.integrator=explicit-euler --set springs.structural.damping=0
-# Under the documented line, the same moment with its unit and place in the run (issue 18:
-# a bare "t=0.012000" left the reader to guess the unit).
+# Under the documented line, the same moment with its unit and place in the run (a bare
+# "t=0.012000" left the reader to guess the unit).
 check "the divergence time is said in seconds, with its step" \
   grep -Eq '^  that is [0-9.e+-]+ s of simulated time, in step [0-9]+ of 1000 \(dt [0-9.e+-]+ s\)$' "$work/err"
 # The same sheet with its own (stable) settings does not.
@@ -57,8 +57,8 @@ expect 2 '^error: --set' -- --headless "$scenes/hanging_sheet.toml" --steps 1 --
 expect 2 '^error: --set cloth.(rows|cols): .*4194304' -- --headless "$scenes/hanging_sheet.toml" --steps 1 \
   --set cloth.rows=100000 --set cloth.cols=100000
 expect 2 "^error: $work/missing.toml: " -- --headless "$work/missing.toml" --steps 1
-# A mesh cloth (issue 19) runs headless, one dump line per vertex; a bad OBJ is refused with
-# the OBJ's own file:line (its path made absolute, as the scene keeps it) and what is wrong.
+# A mesh cloth runs headless, one dump line per vertex; a bad OBJ is refused with the OBJ's own
+# file:line (its path made absolute, as the scene keeps it) and what is wrong.
 printf 'v 0 0 0\nv 1 0 0\nv 1 -1 0\nv 0 -1 0\nf 1 4 3 2\n' >"$work/square.obj"
 printf '[cloth]\nmesh = "square.obj"\npins = [1, 2]\n' >"$work/mesh.toml"
 expect 0 quiet -- --headless "$work/mesh.toml" --steps 10 --dump "$work/mesh.csv"

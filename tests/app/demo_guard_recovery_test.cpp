@@ -1,6 +1,6 @@
-// The demo's recovery from the guards that watch for what does not diverge (issue 20, item
-// 3): energy gained from nowhere on contact, and tearing that runs away. Each rolls back,
-// halves dt and runs on, as from a divergence (demo_state_test.cpp, "recovery that heals").
+// The demo's recovery from the guards that watch for what does not diverge: energy gained from
+// nowhere on contact, and tearing that runs away. Each rolls back, halves dt and runs on, as
+// from a divergence (demo_state_test.cpp, "recovery that heals").
 //
 // Truths: the runs are unstable at the dt they start with and stable at a quarter of it
 // (docs/accuracy.md); the message names the guard that fired; the run goes on finite, its

@@ -1,5 +1,5 @@
-// The demo's operations, headless, through the same DemoState calls the window makes:
-// hostile interaction (issue 9), refused input that changes nothing, saving scenes.
+// The demo's operations, headless, through the same DemoState calls the window makes: hostile
+// interaction, refused input that changes nothing, saving scenes.
 //
 // Truths: a refused edit leaves the Scene equal field by field (Scene::operator==) and the
 // state hash equal; pinned particles never move; a saved scene loads back equal; every frame
@@ -490,7 +490,7 @@ TEST(DemoState, MassByOrdersOfMagnitudeMidRunStaysFiniteOrRecovers) {
     }
 }
 
-// ---- recovery that heals (issue 17) -------------------------------------------------------------
+// ---- recovery that heals ------------------------------------------------------------------------
 
 // Light particles (k/m 33× the scene's: a step limit near 0.09 ms) make the scene's 0.25 ms
 // diverge within a few steps; steps until the main run and its copy have both rolled back.
@@ -576,7 +576,7 @@ TEST(DemoState, ParametersThatCannotHoldTheChosenDtAreRetriedEverMoreRarely) {
     EXPECT_TRUE(finite_state(state.simulation.cloth()));
 }
 
-// ---- what the window says (issue 18, items 5 and 12) --------------------------------------------
+// ---- what the window says -----------------------------------------------------------------------
 
 bool ascii_only(const std::string& text) {
     return std::all_of(text.begin(), text.end(),

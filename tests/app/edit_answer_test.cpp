@@ -1,6 +1,6 @@
-// Where and how long the panel says an edit was refused (issue 18, item 3): under the
-// control that made it, until the next edit; in words without the command line's lead.
-// Truth: the loader's message for a negative stiffness, copied from `weft --set`.
+// Where and how long the panel says an edit was refused: under the control that made it, until
+// the next edit; in words without the command line's lead. Truth: the loader's message for a
+// negative stiffness, copied from `weft --set`.
 #include <gtest/gtest.h>
 
 #include "app/edit_answer.h"

@@ -1,6 +1,6 @@
 // Pausing and the HUD's plots, through the calls the window makes each frame: plan the
 // frame, step, measure. Truths: a paused frame takes no step unless one was asked for, and
-// adds no sample to any plot (issue 18: the energy plot scrolled while paused); each sample
+// adds no sample to any plot (the energy plot used to scroll while paused); each sample
 // is the quantity measured directly on the state the frame ended in.
 #include <gtest/gtest.h>
 

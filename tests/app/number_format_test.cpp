@@ -1,7 +1,6 @@
-// How the panel writes numbers (issue 18: a light particle's 0.00000407 kg read "0.00" g and
-// a damping of 0.00025 read "0.0003"). Truths: the values themselves, written out by hand,
-// and for every magnitude a text that reads back within half a unit of its last
-// significant digit.
+// How the panel writes numbers (a light particle's 0.00000407 kg read "0.00" g and a damping
+// of 0.00025 read "0.0003"). Truths: the values themselves, written out by hand, and for every
+// magnitude a text that reads back within half a unit of its last significant digit.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,6 +1,6 @@
-// What the panel edits beyond the sliders of old (issue 18): gravity as a vector, the wind's
-// vertical part, the camera's field of view, where each collider is and its size, and the
-// grid rebuilt on Apply; each through the calls the panel makes, checked like a scene file.
+// What the panel edits beyond the sliders of old: gravity as a vector, the wind's vertical
+// part, the camera's field of view, where each collider is and its size, and the grid rebuilt
+// on Apply; each through the calls the panel makes, checked like a scene file.
 //
 // Truths: a taken edit shows in the running simulation (or camera) exactly as typed; a
 // refused one leaves the scene equal field by field and the state hash equal, and says why

@@ -1,6 +1,6 @@
-// How the window is shared between the panel and the view (issue 18, items 2 and 4): the
-// view lies beside the panel, never under it, at the sizes the issue names and at the
-// limits of the rule. Truth: the rule's arithmetic worked out by hand for each case.
+// How the window is shared between the panel and the view: the view lies beside the panel,
+// never under it, at common window sizes and at the limits of the rule. Truth: the rule's
+// arithmetic worked out by hand for each case.
 #include <gtest/gtest.h>
 
 #include "app/screen_layout.h"

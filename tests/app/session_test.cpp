@@ -1,5 +1,5 @@
-// Recording and replaying a session, and runs side by side (issue 8), through the DemoState
-// calls the window makes.
+// Recording and replaying a session, and runs side by side, through the DemoState calls the
+// window makes.
 //
 // Truths: a replay of a recorded session ends in the recorded state, bit for bit (state
 // hash); a copy with the same integrator and dt fed the same events stays bit for bit equal

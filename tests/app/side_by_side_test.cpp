@@ -1,6 +1,6 @@
-// Side by side's columns share the view beside the panel, not the window (issue 18, item 4:
-// split across the whole window, most of the main run's column sat under the panel). Truth:
-// the 800 x 600 window's layout (a 300 px panel, a 500 px view) worked out by hand.
+// Side by side's columns share the view beside the panel, not the window (split across the
+// whole window, most of the main run's column sat under the panel). Truth: the 800 x 600
+// window's layout (a 300 px panel, a 500 px view) worked out by hand.
 #include <gtest/gtest.h>
 
 #include "app/screen_layout.h"

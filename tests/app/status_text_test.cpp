@@ -36,7 +36,7 @@ TEST(StatusText, StretchSaysWhatIsStretchedAndOverWhat) {
 
 TEST(StatusText, TheMostStretchedSpringOfAHangingSheetIsSaidToBeBesideAPin) {
     // Hung by its two top corners, a sheet's weight goes through the springs at the pins:
-    // at rest they are the most stretched (issue 18: "37.6 %" puzzled without a place).
+    // at rest they are the most stretched ("37.6 %" puzzled without a place).
     Scene scene;
     scene.cloth.rows = 12;
     scene.cloth.cols = 12;
@@ -56,7 +56,7 @@ TEST(StatusText, TheMostStretchedSpringOfAHangingSheetIsSaidToBeBesideAPin) {
 }
 
 TEST(StatusText, SignsTheWindowsFontLacksAreSpelledInAscii) {
-    // The font draws "?" for these (issue 18, item 5: "diverged ... ? rolled back").
+    // The font draws "?" for these (the window said "diverged ... ? rolled back").
     EXPECT_EQ(ascii_text("a \u2014 b"), "a - b");
     EXPECT_EQ(ascii_text("rows \u00d7 cols = 5\u00b7m/s\u00b2"), "rows x cols = 5.m/s2");
     EXPECT_EQ(ascii_text("\u0394v at 45\u00b0\u2026"), "dv at 45 deg...");

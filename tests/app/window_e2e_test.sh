@@ -138,10 +138,10 @@ echo "missed drag: largest difference from the undisturbed run $largest m"
 check awk -v d="$largest" 'BEGIN { exit !(d < 0.002) }'
 
 # --- 4. side by side, recorded, replayed ------------------------------------------------------
-# The view beside the panel splits into two columns of 250 x 600 (issue 18, item 4: not the
-# window, half of which the panel covers): the sheet's centre is at window pixel (425, 300)
-# in the left one (the main run, symplectic Euler) and (675, 300) in the right one (RK4),
-# each column showing the middle 250 px of its sheet. The drag starts on the right copy.
+# The view beside the panel splits into two columns of 250 x 600 (not the window, half of which
+# the panel covers): the sheet's centre is at window pixel (425, 300) in the left one (the main
+# run, symplectic Euler) and (675, 300) in the right one (RK4), each column showing the middle
+# 250 px of its sheet. The drag starts on the right copy.
 start_weft side --compare rk4 --record "$work/side/session.toml"
 xdotool key --window "$window" F12
 sleep 0.5
@@ -280,10 +280,9 @@ done
 # --- 7. a refused edit is said under its control ---------------------------------------------
 # "materials" opens (its header at y = 390, under the statistics, their three plots and the
 # solver); Ctrl+click on the structural stiffness slider (its first stiffness, at y = 430)
-# types a value; -5 is refused. The refusal must
-# be said right under the slider (rows 438 to 478), whole, inside the panel, and stay there
-# (issue 18, item 3: it sat at the panel's foot, cut off, out of sight) until the next edit,
-# 700, which is taken.
+# types a value; -5 is refused. The refusal must be said right under the slider (rows 438 to
+# 478), whole, inside the panel, and stay there (it used to sit at the panel's foot, cut off,
+# out of sight) until the next edit, 700, which is taken.
 refusal_red="255 102 102"
 # type_into_slider X Y TEXT: Ctrl+click at (X, Y) and type TEXT, through the X server's own
 # input (the slider ignores clicks sent to the window alone). Each key and button is held
@@ -334,7 +333,7 @@ check test "$after_next_edit" -eq 0
 # In the same window. The three plots and their labels fill the panel's rows 135 to 292; a
 # frame that steps
 # adds a sample to each (the ms-per-frame one is never flat), so they move while running,
-# hold still while paused (issue 18: the energy plot scrolled), and move once for one step.
+# hold still while paused (the energy plot used to scroll), and move once for one step.
 # The buttons sit at the panel's top: pause at (42, 50), step at (117, 50).
 plots_changed() { "$png_diff" "$1" "$2" 8 280 8 135 292; }
 shoot_window refuse; running_a=$window_shot
@@ -355,7 +354,7 @@ check awk -v f="$paused" 'BEGIN { exit !(f == 0) }'
 check awk -v f="$one_step" 'BEGIN { exit !(f > 0.001) }'
 
 # --- 9. a grid the window cannot step is refused, and said whole -----------------------------
-# Issue 18: the panel built a 2048 x 2048 grid (about 10 s and 1.7 GB, the window frozen).
+# The panel used to build a 2048 x 2048 grid (about 10 s and 1.7 GB, the window frozen).
 # It is refused before anything is built (src/app/grid_edit.h). With "solver" folded (its
 # header at y = 304) the grid section opens under its header (y = 350): rows at y = 373,
 # cols at y = 396, and with 2048 x 2048 typed (the limit's warning wrapping to two lines)

@@ -1,6 +1,6 @@
-// weft-bench's plots (issue 18, item 10). Truths read off the image itself: no ink in the
-// image's last columns (nothing runs off its edge), and every series' colour on the data
-// area (nothing hidden under another series).
+// weft-bench's plots. Truths read off the image itself: no ink in the image's last columns
+// (nothing runs off its edge), and every series' colour on the data area (nothing hidden under
+// another series).
 #include <gtest/gtest.h>
 
 #include "weft_bench/plot.h"

@@ -70,8 +70,8 @@ expect 0 quiet -- precision "$scenes/sheet_on_sphere.toml" --set cloth.rows=3 --
 check "contact scene measured by invariants" test -s "$work/prec/invariants_sheet_on_sphere.csv"
 check "no trajectory errors for it" test ! -e "$work/prec/precision.csv"
 
-# --repeats 1 is one timed run per point (issue 18: it used to take the median of no runs and
-# crash). A 2x2 default sheet: six integrators x six steps, each with a measured time.
+# --repeats 1 is one timed run per point (it used to take the median of no runs and crash). A
+# 2x2 default sheet: six integrators x six steps, each with a measured time.
 expect 0 quiet -- precision "$scenes/hanging_sheet.toml" --set cloth.rows=2 --set cloth.cols=2 \
   --repeats 1 --out "$work/prec1"
 csv=$work/prec1/precision.csv

@@ -1,5 +1,5 @@
-// Topology apart from state (issue 19): copies of a cloth (recovery snapshots, rollbacks,
-// runs side by side) share one ClothTopology until one of them changes it.
+// Topology apart from state: copies of a cloth (recovery snapshots, rollbacks, runs side by
+// side) share one ClothTopology until one of them changes it.
 //
 // Truths: a copy holds the very same topology object (no new one is allocated) however long
 // both step; a tear, a cut or a pin gives only the cloth that made it a topology of its own,

@@ -1,7 +1,7 @@
-// Issue 20's bar for contacts at frame-sized steps: the shipped 128² cloth dropped on a ball
-// at one implicit step per 60 Hz frame (assets/scenes/drape_sphere_128.toml) passes through
-// neither the ball nor the ground nor itself, measured as penetration depths over every
-// particle's straight path through each step.
+// The bar for contacts at frame-sized steps: the shipped 128² cloth dropped on a ball at one
+// implicit step per 60 Hz frame (assets/scenes/drape_sphere_128.toml) passes through neither
+// the ball nor the ground nor itself, measured as penetration depths over every particle's
+// straight path through each step.
 #include <gtest/gtest.h>
 
 #include <algorithm>

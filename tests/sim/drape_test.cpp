@@ -1,6 +1,6 @@
-// Issue #7's acceptance test: a sheet draped on a sphere under self-collision comes to rest
-// without passing through the sphere or itself. Checked against truths that do not come from
-// the passes under test: the sphere's and the ground's geometry after every step, and a
+// The acceptance test of self-collision: a sheet draped on a sphere comes to rest without
+// passing through the sphere or itself. Checked against truths that do not come from the
+// passes under test: the sphere's and the ground's geometry after every step, and a
 // brute-force search over every pair of particles not joined by a spring.
 #include <gtest/gtest.h>
 

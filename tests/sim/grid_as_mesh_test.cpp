@@ -1,7 +1,7 @@
 // A grid written as OBJ and loaded as a mesh scene against the grid builder's sheet of the
-// same material (issue 19): the same cloth, then step for step the same positions and
-// velocities, bit for bit, and the same state hash. And meshes that are nearly that grid
-// but not exactly (a vertex moved, the vertices shuffled) stay plain meshes and still hang.
+// same material: the same cloth, then step for step the same positions and velocities, bit for
+// bit, and the same state hash. And meshes that are nearly that grid but not exactly (a vertex
+// moved, the vertices shuffled) stay plain meshes and still hang.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 // The strain view of a flat sheet seen nearly edge-on — the default scene right after R —
-// shows its springs, not the surface under them: every pixel a spring covers when drawn
-// alone is that spring's colour over the shaded surface too (issue 18: it was speckled
-// with the surface's dark underside where the surface won the depth test).
+// shows its springs, not the surface under them: every pixel a spring covers when drawn alone
+// is that spring's colour over the shaded surface too (it was speckled with the surface's dark
+// underside where the surface won the depth test).
 #include <gtest/gtest.h>
 
 #include "sim/scene_loader.h"

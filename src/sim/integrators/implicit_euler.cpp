@@ -78,7 +78,8 @@ bool some_spring_longer_than(const Cloth& cloth, double ratio, WorkerPool* pool)
 // The largest error of the step's linearisation over the springs that end the step longer
 // than `ratio` rest lengths, in rest lengths: for each, how far its force at the end of the
 // step, k (|d1| - L) d1 / |d1|, is from what the step assumed, f(d0) + K(d0) (d1 - d0) (K as
-// in the header), divided by k L. `start`: the positions x0.
+// in the header, a compressed spring's negative transverse term left out as in the step),
+// divided by k L. `start`: the positions x0.
 //
 // Shorter springs are left out. A compressed spring's force is at most k L, so its error
 // cannot run away, but it is large by design where a fold turns one over (the step drops its
@@ -170,7 +171,8 @@ void step_implicit_euler(Cloth& cloth, const ForceField& field, double dt,
     work.implicit_last_splits = 0;
     // A step-size controller's memory: a step that had to be split is followed by one that
     // starts one level coarser than its finest piece, not by a whole step that would most
-    // likely fail again and be thrown away. A step that needs no split brings it back to 0.
+    // likely fail again and be thrown away. Each step that needs no split of its own takes
+    // the next one level closer to a whole step.
     const int start = std::min(work.implicit_start_depth, work.implicit_settings.max_split_depth);
     const int pieces = 1 << start;
     int finest = start;

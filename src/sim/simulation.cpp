@@ -115,12 +115,7 @@ StepReport Simulation::step() {
     end_drag();
     report = take_step(false);
     report.hand_slipped = true;
-    report.times.integrate += first_try.integrate;
-    report.times.strain_limit += first_try.strain_limit;
-    report.times.contacts += first_try.contacts;
-    report.times.tearing += first_try.tearing;
-    report.times.guards += first_try.guards;
-    report.times.implicit.add(first_try.implicit);
+    report.times.add(first_try);
     return report;
 }
 

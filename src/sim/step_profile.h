@@ -16,11 +16,12 @@ struct ImplicitPhaseTimes {
     double split_checks = 0.0;   // judging each piece's linearisation, and the copies a split
                                  // goes back to
     double total() const { return setup + coarse_levels + iterations + split_checks; }
-    void add(const ImplicitPhaseTimes& other) {
-        setup += other.setup;
-        coarse_levels += other.coarse_levels;
-        iterations += other.iterations;
-        split_checks += other.split_checks;
+    // Adds `other` × weight (-1: takes it away).
+    void add(const ImplicitPhaseTimes& other, double weight = 1.0) {
+        setup += weight * other.setup;
+        coarse_levels += weight * other.coarse_levels;
+        iterations += weight * other.iterations;
+        split_checks += weight * other.split_checks;
     }
 };
 
@@ -55,6 +56,15 @@ struct StepTimes {
     double guards = 0.0;          // divergence, runaway-tearing and energy guards
     ImplicitPhaseTimes implicit;  // part of integrate, by implicit Euler
     double total() const { return integrate + strain_limit + contacts + tearing + guards; }
+    // Adds `other` × weight (-1: takes it away).
+    void add(const StepTimes& other, double weight = 1.0) {
+        integrate += weight * other.integrate;
+        strain_limit += weight * other.strain_limit;
+        contacts += weight * other.contacts;
+        tearing += weight * other.tearing;
+        guards += weight * other.guards;
+        implicit.add(other.implicit, weight);
+    }
 };
 
 struct StepProfile {
@@ -74,12 +84,7 @@ struct StepProfile {
         ++steps;
         held_steps += held ? 1 : 0;
         slips += slipped ? 1 : 0;
-        seconds.integrate += times.integrate;
-        seconds.strain_limit += times.strain_limit;
-        seconds.contacts += times.contacts;
-        seconds.tearing += times.tearing;
-        seconds.guards += times.guards;
-        seconds.implicit.add(times.implicit);
+        seconds.add(times);
         force_evaluations += force_evaluations_added;
         solver_iterations += static_cast<std::uint64_t>(iterations);
         most_iterations = iterations > most_iterations ? iterations : most_iterations;
@@ -93,15 +98,7 @@ struct StepProfile {
         part.steps -= earlier.steps;
         part.held_steps -= earlier.held_steps;
         part.slips -= earlier.slips;
-        part.seconds.integrate -= earlier.seconds.integrate;
-        part.seconds.strain_limit -= earlier.seconds.strain_limit;
-        part.seconds.contacts -= earlier.seconds.contacts;
-        part.seconds.tearing -= earlier.seconds.tearing;
-        part.seconds.guards -= earlier.seconds.guards;
-        part.seconds.implicit.setup -= earlier.seconds.implicit.setup;
-        part.seconds.implicit.coarse_levels -= earlier.seconds.implicit.coarse_levels;
-        part.seconds.implicit.iterations -= earlier.seconds.implicit.iterations;
-        part.seconds.implicit.split_checks -= earlier.seconds.implicit.split_checks;
+        part.seconds.add(earlier.seconds, -1.0);
         part.force_evaluations -= earlier.force_evaluations;
         part.solver_iterations -= earlier.solver_iterations;
         part.splits -= earlier.splits;

@@ -73,7 +73,7 @@ constexpr StudyHelp studies[] = {
      "                      [--duration SECONDS] [--max-run-seconds SECONDS]\n",
      "Each method at the 60 fps frame budget: weft's symplectic and implicit Euler, XPBD with\n"
      "substeps and a plain float step; cost per frame, error, stretch (default scene:\n"
-     "cloth_128.toml if there is one, else large_sheet.toml).\n"
+     "cloth_128.toml if there is one, else large_rubber_sheet.toml).\n"
      "  --sizes N,N,...     particles per side (3 to 4096, default 32,64,128,256)\n"
      "  --duration SECONDS  simulated time of each run (default 0.5)\n"
      "  --max-run-seconds SECONDS  wall-clock cap of one method's run (default 30)\n"},
@@ -212,7 +212,7 @@ int main(int argc, char** argv) {
         const std::string scene = scenes.empty() ? scenes_dir + "/hanging_sheet.toml" : scenes[0];
         weft::bench::ThroughputOptions options{scene, overrides, out_dir};
         if (!sizes.empty()) options.sizes = sizes;
-        options.demo_scene = scenes_dir + "/large_sheet.toml";
+        options.demo_scene = scenes_dir + "/large_rubber_sheet.toml";
         return weft::bench::run_throughput_study(options);
     }
     if (study == "realtime") {
@@ -222,7 +222,7 @@ int main(int argc, char** argv) {
         const std::string scene = !scenes.empty() ? scenes[0]
                                   : std::filesystem::exists(cloth_like)
                                       ? cloth_like
-                                      : scenes_dir + "/large_sheet.toml";
+                                      : scenes_dir + "/large_rubber_sheet.toml";
         weft::bench::RealtimeOptions options{scene, overrides, out_dir};
         if (!sizes.empty()) options.sizes = sizes;
         if (duration) options.duration = *duration;

@@ -31,7 +31,7 @@ constexpr double not_measured = std::numeric_limits<double>::quiet_NaN();
 // The scene's sheet with n × n particles and the same physical sheet: as wide (spacing =
 // side / (n - 1)), the same areal density (mass ∝ spacing²), the same stiffness per spring
 // (a grid's stiffness per unit width is k whatever the spacing) and the same damping rates
-// c/m and air_drag/m (both scaled with the mass, as large_sheet.toml was made from the
+// c/m and air_drag/m (both scaled with the mass, as large_rubber_sheet.toml was made from the
 // default sheet). Tearing, strain limiting, self-collision and colliders are taken out: the
 // methods are compared on the springs alone, which is all XPBD and the plain step model.
 Scene resized_sheet(const Scene& base, int n) {

@@ -68,7 +68,7 @@ Interleaved frame_seconds(raster::Framebuffer& framebuffer, const raster::Camera
                                rounds);
 }
 
-// The demo's 128² sheet as the demo shows it: large_sheet.toml stepped 2 s with its own
+// The demo's 128² sheet as the demo shows it: large_rubber_sheet.toml stepped 2 s with its own
 // integrator and dt (hanging from its pins, across a good part of the screen), drawn shaded
 // at 1280x720 through its camera; and whether a demo frame — the steps of 1/60 s and that
 // drawing — fits in 1/60 s.

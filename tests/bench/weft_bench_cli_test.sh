@@ -105,7 +105,7 @@ expect 2 "^error: --max-run-seconds: '0' must be" -- realtime --max-run-seconds 
 expect 2 "^error: --sizes: '2' is out of range" -- realtime --sizes 2 --out "$work/x"
 expect 2 '^error: realtime takes one scene' -- realtime a.toml b.toml --out "$work/x"
 check "nothing was written for refused input" test ! -e "$work/x"
-expect 0 quiet -- realtime "$scenes/large_sheet.toml" --sizes 8 --duration 0.05 --out "$work/rt"
+expect 0 quiet -- realtime "$scenes/large_rubber_sheet.toml" --sizes 8 --duration 0.05 --out "$work/rt"
 csv=$work/rt/realtime.csv
 check "realtime CSV header" grep -q '^particles_per_side,particles,springs,method,setting,dt_s,' "$csv"
 # The weft-to-plain ratio, 1 + 3 + 4 + 1 method settings, the reference and a summary per

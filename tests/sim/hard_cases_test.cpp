@@ -80,9 +80,9 @@ TEST(HardCases, ALargeSheetWithAllFamiliesStaysSound) {
     scene.cloth.rows = 128;
     scene.cloth.cols = 128;
     scene.cloth.spacing = 0.01;
-    scene.cloth.particle_mass = 0.0004;  // 4 kg/m², the default sheet's areal density
+    scene.cloth.particle_mass = 0.0004;  // 4 kg/m², a heavy sheet (large_rubber_sheet.toml's)
     scene.cloth.pin_preset = PinPreset::top_row;
-    // Damping scaled with the mass, so the damping rates are the default sheet's.
+    // Damping scaled with the mass, so the damping rates are large_rubber_sheet.toml's.
     scene.structural = {true, 800.0, 0.02};
     scene.shear = {true, 400.0, 0.02};
     scene.bend = {true, 100.0, 0.004};

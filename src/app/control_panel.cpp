@@ -158,7 +158,7 @@ void materials(DemoState& state) {
 void optional_feature(DemoState& state, const char* label, SceneKey key,
                       std::optional<double> Scene::*member, double shown, double low, double high,
                       const char* suffix) {
-    const std::string path(scene_key_names[static_cast<std::size_t>(key)]);
+    const std::string path(scene_key_name(key));
     ImGui::PushID(path.c_str());
     const std::optional<double>& value = state.simulation.scene().*member;
     bool on = value.has_value();

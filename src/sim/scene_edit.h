@@ -9,117 +9,17 @@
 // cols, pins inside the grid, thickness against spacing) look at the batch's result.
 #pragma once
 
-#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
-#include <variant>
 #include <vector>
 
 #include "sim/scene.h"
+#include "sim/scene_keys.h"
 
 namespace weft {
-
-// Each key a live edit may change, named in scene_key_names by its dotted scene-file path.
-enum class SceneKey : std::uint8_t {
-    cloth_rows,  // int
-    cloth_cols,  // int
-    cloth_spacing,
-    cloth_particle_mass,
-    cloth_layout,
-    cloth_orientation,
-    cloth_pins,  // GridPins
-    cloth_origin,
-    cloth_density,  // a mesh's
-    structural_enabled,
-    structural_stiffness,
-    structural_damping,
-    shear_enabled,
-    shear_stiffness,
-    shear_damping,
-    bend_enabled,
-    bend_stiffness,
-    bend_damping,
-    tear_max_stretch,  // a number, or FeatureOff to switch tearing off
-    strain_limit_max_strain,
-    self_collision_thickness,
-    gravity,
-    air_drag,
-    wind,
-    gust,
-    integrator,
-    dt,
-    collider_center,  // of the collider at SceneEdit::collider
-    collider_radius,
-    collider_point,
-    collider_normal,
-    collider_response,
-    collider_restitution,
-    collider_friction,
-    floor_enabled,
-    camera_position,
-    camera_target,
-    camera_fov_degrees,
-};
-
-inline constexpr std::array<std::string_view, 38> scene_key_names = {
-    "cloth.rows",
-    "cloth.cols",
-    "cloth.spacing",
-    "cloth.particle_mass",
-    "cloth.layout",
-    "cloth.orientation",
-    "cloth.pins",
-    "cloth.origin",
-    "cloth.density",
-    "springs.structural.enabled",
-    "springs.structural.stiffness",
-    "springs.structural.damping",
-    "springs.shear.enabled",
-    "springs.shear.stiffness",
-    "springs.shear.damping",
-    "springs.bend.enabled",
-    "springs.bend.stiffness",
-    "springs.bend.damping",
-    "tearing.max_stretch",
-    "strain_limit.max_strain",
-    "self_collision.thickness",
-    "forces.gravity",
-    "forces.air_drag",
-    "forces.wind",
-    "forces.gust",
-    "solver.integrator",
-    "solver.dt",
-    "colliders.center",
-    "colliders.radius",
-    "colliders.point",
-    "colliders.normal",
-    "colliders.response",
-    "colliders.restitution",
-    "colliders.friction",
-    "floor.enabled",
-    "camera.position",
-    "camera.target",
-    "camera.fov_degrees",
-};
-
-// A grid's pins: a preset, or a list of [row, col].
-struct GridPins {
-    PinPreset preset = PinPreset::top_corners;
-    std::vector<GridIndex> list;  // when preset == list
-
-    bool operator==(const GridPins&) const = default;
-};
-
-// An optional feature ([tearing], [strain_limit], [self_collision]) switched off.
-struct FeatureOff {
-    bool operator==(const FeatureOff&) const = default;
-};
-
-using SceneValue = std::variant<double, std::int64_t, bool, Vec3d, Integrator, Layout, Orientation,
-                                ContactResponse, GridPins, FeatureOff>;
 
 struct SceneEdit {
     SceneKey key = SceneKey::dt;

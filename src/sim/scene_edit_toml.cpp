@@ -49,18 +49,21 @@ std::optional<SceneEdit> read_typed(TomlReader& reader, const std::string& key,
     // The strain limit's old name, as a recording made before the rename has it (the scene
     // loader takes it too, with a warning): the same strain.
     if (plain == "strain_limit.max_stretch") plain = "strain_limit.max_strain";
-    std::size_t found = scene_key_names.size();
-    for (std::size_t k = 0; k < scene_key_names.size(); ++k)
-        if (plain == scene_key_names[k]) found = k;
-    if (found == scene_key_names.size() ||
-        indexed != is_collider_key(static_cast<SceneKey>(found))) {
+    const std::span<const SceneKeyInfo> keys = scene_key_table();
+    std::size_t found = keys.size();
+    for (std::size_t k = 0; k < keys.size(); ++k)
+        if (plain == keys[k].name) found = k;
+    if (found == keys.size() || indexed != is_collider_key(keys[found].key)) {
         std::string what = "'" + key + "' is not a setting a live edit can change";
-        if (auto suggestion = nearest_key(plain, scene_key_names))
+        std::vector<std::string_view> names;
+        for (const SceneKeyInfo& info : keys) names.push_back(info.name);
+        if (auto suggestion = nearest_key(plain, names))
             what += " (did you mean '" + *suggestion + "'?)";
         reader.fail(value, key, what);
         return std::nullopt;
     }
-    edit.key = static_cast<SceneKey>(found);
+    const SceneKeyInfo& info = keys[found];
+    edit.key = info.key;
     // Read through the loader's own typed reads, from a table holding just this value, so a
     // wrong type gets the words a scene file's would.
     const auto dot = key.rfind('.');
@@ -68,88 +71,44 @@ std::optional<SceneEdit> read_typed(TomlReader& reader, const std::string& key,
     const std::string leaf = key.substr(dot + 1);
     toml::table holder;
     value.visit([&](const auto& concrete) { holder.insert_or_assign(leaf, concrete); });
-    switch (edit.key) {
-        case SceneKey::cloth_rows:
-        case SceneKey::cloth_cols: {
+    switch (info.kind) {
+        case ValueKind::count: {
             std::int64_t count = 0;
             if (!reader.read_int(holder, parent, leaf, count)) return std::nullopt;
             edit.value = count;
             return edit;
         }
-        case SceneKey::structural_enabled:
-        case SceneKey::shear_enabled:
-        case SceneKey::bend_enabled:
-        case SceneKey::floor_enabled: {
+        case ValueKind::flag: {
             bool enabled = false;
             if (!reader.read_bool(holder, parent, leaf, enabled)) return std::nullopt;
             edit.value = enabled;
             return edit;
         }
-        case SceneKey::tear_max_stretch:
-        case SceneKey::strain_limit_max_strain:
-        case SceneKey::self_collision_thickness:
+        case ValueKind::feature:
             if (value.is_boolean() && !value.as_boolean()->get()) {  // false: switched off
                 edit.value = FeatureOff{};
                 return edit;
             }
             [[fallthrough]];
-        case SceneKey::cloth_spacing:
-        case SceneKey::cloth_particle_mass:
-        case SceneKey::cloth_density:
-        case SceneKey::structural_stiffness:
-        case SceneKey::structural_damping:
-        case SceneKey::shear_stiffness:
-        case SceneKey::shear_damping:
-        case SceneKey::bend_stiffness:
-        case SceneKey::bend_damping:
-        case SceneKey::air_drag:
-        case SceneKey::gust:
-        case SceneKey::dt:
-        case SceneKey::collider_radius:
-        case SceneKey::collider_restitution:
-        case SceneKey::collider_friction:
-        case SceneKey::camera_fov_degrees: {
+        case ValueKind::number: {
             double number = 0.0;
             if (!reader.read_number(holder, parent, leaf, number)) return std::nullopt;
             edit.value = number;
             return edit;
         }
-        case SceneKey::cloth_origin:
-        case SceneKey::gravity:
-        case SceneKey::wind:
-        case SceneKey::collider_center:
-        case SceneKey::collider_point:
-        case SceneKey::collider_normal:
-        case SceneKey::camera_position:
-        case SceneKey::camera_target: {
+        case ValueKind::vector: {
             Vec3d vector{};
             if (!reader.read_vec3(holder, parent, leaf, vector)) return std::nullopt;
             edit.value = vector;
             return edit;
         }
-        case SceneKey::cloth_layout:
-        case SceneKey::cloth_orientation:
-        case SceneKey::integrator:
-        case SceneKey::collider_response: {
+        case ValueKind::choice: {
             int index = 0;
-            const bool read =
-                edit.key == SceneKey::cloth_layout
-                    ? reader.read_choice(holder, parent, leaf, layout_names, index)
-                : edit.key == SceneKey::cloth_orientation
-                    ? reader.read_choice(holder, parent, leaf, orientation_names, index)
-                : edit.key == SceneKey::integrator
-                    ? reader.read_choice(holder, parent, leaf, integrator_names, index)
-                    : reader.read_choice(holder, parent, leaf, contact_response_names, index);
-            if (!read) return std::nullopt;
-            if (edit.key == SceneKey::cloth_layout) edit.value = static_cast<Layout>(index);
-            if (edit.key == SceneKey::cloth_orientation)
-                edit.value = static_cast<Orientation>(index);
-            if (edit.key == SceneKey::integrator) edit.value = static_cast<Integrator>(index);
-            if (edit.key == SceneKey::collider_response)
-                edit.value = static_cast<ContactResponse>(index);
+            if (!reader.read_choice(holder, parent, leaf, info.choices, index)) return std::nullopt;
+            edit.value = info.choice_value(index);
             return edit;
         }
-        case SceneKey::cloth_pins: {
+        case ValueKind::pins: {
             GridPins pins;
             if (value.is_string()) {
                 int preset = 0;

@@ -14,9 +14,9 @@
 
 namespace weft {
 
-// The edit that sets `key` (a scene_key_names path; a collider's as "colliders.N.field") to
-// `value`. On a key no edit reaches, or a value of the wrong type, records the error in
-// `reader` at `value` and returns nothing.
+// The edit that sets `key` (a scene key's path, scene_keys.h; a collider's as "colliders.N.field")
+// to `value`. On a key no edit reaches, or a value of the wrong type, records the error in `reader`
+// at `value` and returns nothing.
 std::optional<SceneEdit> read_scene_edit(TomlReader& reader, const std::string& key,
                                          const toml::node& value);
 

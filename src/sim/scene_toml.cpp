@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "sim/scene_keys.h"
 #include "sim/scene_loader.h"
 #include "sim/scene_toml_mesh.h"
 #include "sim/toml_input_guard.h"
@@ -47,18 +48,83 @@ std::optional<Integrator> integrator_from_name(std::string_view name) {
 
 namespace {
 
+// The keys the key table lists directly under `section` ("forces", "springs.shear",
+// "colliders"), by their last name, in the table's order; then `extra`, the section's keys
+// that only a file gives.
+std::vector<std::string_view> section_keys(std::string_view section,
+                                           std::initializer_list<std::string_view> extra = {}) {
+    std::vector<std::string_view> keys;
+    for (const SceneKeyInfo& info : scene_key_table()) {
+        const auto dot = info.name.rfind('.');
+        if (info.name.substr(0, dot) == section) keys.push_back(info.name.substr(dot + 1));
+    }
+    keys.insert(keys.end(), extra.begin(), extra.end());
+    return keys;
+}
+
+int choice_index(const SceneValue& value) {
+    return std::visit(
+        [](const auto& v) {
+            if constexpr (std::is_enum_v<std::decay_t<decltype(v)>>) return static_cast<int>(v);
+            return 0;
+        },
+        value);
+}
+
+// Reads the keys of `table` that the key table lists under `section` and that are plain
+// values (numbers, flags, vectors, choices), each by its kind and rule, in the table's
+// order, into `scene` (into its collider `collider` for a collider's keys). A key the file
+// leaves out keeps the value `scene` has. Counts, pins and optional features have reads
+// of their own, which join keys.
+void read_plain_keys(TomlReader& reader, const toml::table& table, std::string_view section,
+                     Scene& scene, std::uint32_t collider = 0) {
+    const std::string path(section);
+    for (const SceneKeyInfo& info : scene_key_table()) {
+        const auto dot = info.name.rfind('.');
+        if (info.name.substr(0, dot) != section) continue;
+        const std::string_view leaf = info.name.substr(dot + 1);
+        const SceneValue current = info.get(scene, collider);
+        switch (info.kind) {
+            case ValueKind::number: {
+                double number = std::get<double>(current);
+                if (reader.read_number(table, path, leaf, number, info.rule))
+                    info.set(scene, number, collider);
+                break;
+            }
+            case ValueKind::flag: {
+                bool flag = std::get<bool>(current);
+                if (reader.read_bool(table, path, leaf, flag)) info.set(scene, flag, collider);
+                break;
+            }
+            case ValueKind::vector: {
+                Vec3d vector = std::get<Vec3d>(current);
+                if (reader.read_vec3(table, path, leaf, vector)) info.set(scene, vector, collider);
+                break;
+            }
+            case ValueKind::choice: {
+                int index = choice_index(current);
+                if (reader.read_choice(table, path, leaf, info.choices, index))
+                    info.set(scene, info.choice_value(index), collider);
+                break;
+            }
+            case ValueKind::count:
+            case ValueKind::pins:
+            case ValueKind::feature:
+                break;
+        }
+    }
+}
+
 // Reads a table of a spring family. For shear and bend, the table being there means the
 // family is wanted unless it says `enabled = false`.
 void read_spring_family(TomlReader& reader, const toml::table& springs, std::string_view family,
-                        SpringFamilySpec& spec) {
+                        SpringFamilySpec& spec, Scene& scene) {
     const std::string path = TomlReader::join("springs", family);
     const toml::table* table = reader.sub_table(springs, "springs", family);
     if (!table) return;
-    reader.check_keys(*table, path, {"enabled", "stiffness", "damping"});
+    reader.check_keys(*table, path, section_keys(path));
     spec.enabled = true;
-    reader.read_bool(*table, path, "enabled", spec.enabled);
-    reader.read_number(*table, path, "stiffness", spec.stiffness, scene_rules::spring_stiffness);
-    reader.read_number(*table, path, "damping", spec.damping, scene_rules::spring_damping);
+    read_plain_keys(reader, *table, path, scene);
 }
 
 void read_pins(TomlReader& reader, const toml::table& cloth, ClothSpec& spec) {
@@ -99,9 +165,7 @@ void read_cloth(TomlReader& reader, const toml::table& root, Scene& scene) {
     const toml::table* cloth = reader.sub_table(root, "", "cloth");
     if (!cloth) return;
     ClothSpec& spec = scene.cloth;
-    reader.check_keys(*cloth, "cloth",
-                      {"rows", "cols", "spacing", "particle_mass", "layout", "orientation",
-                       "origin", "pins", "mesh", "density", "pin_group"});
+    reader.check_keys(*cloth, "cloth", section_keys("cloth", {"mesh", "pin_group"}));
     if (cloth->get("mesh")) return read_mesh_keys(reader, *cloth, spec);
     for (const char* key : {"density", "pin_group"})
         if (const toml::node* node = cloth->get(key); node && !reader.failed())
@@ -121,15 +185,7 @@ void read_cloth(TomlReader& reader, const toml::table& root, Scene& scene) {
     }
     spec.rows = static_cast<int>(rows);
     spec.cols = static_cast<int>(cols);
-    reader.read_number(*cloth, "cloth", "spacing", spec.spacing, scene_rules::spacing);
-    reader.read_number(*cloth, "cloth", "particle_mass", spec.particle_mass,
-                       scene_rules::particle_mass);
-    int layout = static_cast<int>(spec.layout), orientation = static_cast<int>(spec.orientation);
-    reader.read_choice(*cloth, "cloth", "layout", layout_names, layout);
-    reader.read_choice(*cloth, "cloth", "orientation", orientation_names, orientation);
-    spec.layout = static_cast<Layout>(layout);
-    spec.orientation = static_cast<Orientation>(orientation);
-    reader.read_vec3(*cloth, "cloth", "origin", spec.origin);
+    read_plain_keys(reader, *cloth, "cloth", scene);  // density: refused on a grid above
     read_pins(reader, *cloth, spec);
 }
 
@@ -137,9 +193,9 @@ void read_springs(TomlReader& reader, const toml::table& root, Scene& scene) {
     const toml::table* springs = reader.sub_table(root, "", "springs");
     if (!springs) return;
     reader.check_keys(*springs, "springs", spring_family_names);
-    read_spring_family(reader, *springs, spring_family_names[0], scene.structural);
-    read_spring_family(reader, *springs, spring_family_names[1], scene.shear);
-    read_spring_family(reader, *springs, spring_family_names[2], scene.bend);
+    read_spring_family(reader, *springs, spring_family_names[0], scene.structural, scene);
+    read_spring_family(reader, *springs, spring_family_names[1], scene.shear, scene);
+    read_spring_family(reader, *springs, spring_family_names[2], scene.bend, scene);
     if (!reader.failed() && !scene.structural.enabled) {
         const toml::node& node = *springs->get(spring_family_names[0])->as_table()->get("enabled");
         reader.check(node, "springs.structural.enabled",
@@ -149,16 +205,18 @@ void read_springs(TomlReader& reader, const toml::table& root, Scene& scene) {
 
 // An optional single-key table such as [tearing]: absent means the feature is off; present
 // means on, with the key's value or its default.
-void read_optional_feature(TomlReader& reader, const toml::table& root, std::string_view table_name,
-                           std::string_view key, double default_value, NumberRule rule,
-                           std::optional<double>& out) {
-    const toml::table* table = reader.sub_table(root, "", table_name);
+void read_optional_feature(TomlReader& reader, const toml::table& root, SceneKey key,
+                           Scene& scene) {
+    const SceneKeyInfo& info = scene_key_info(key);
+    const auto dot = info.name.find('.');
+    const std::string path(info.name.substr(0, dot));
+    const std::string_view leaf = info.name.substr(dot + 1);
+    const toml::table* table = reader.sub_table(root, "", path);
     if (!table) return;
-    const std::string path(table_name);
-    reader.check_keys(*table, path, {key});
-    double value = default_value;
-    reader.read_number(*table, path, key, value, rule);
-    out = value;
+    reader.check_keys(*table, path, {leaf});
+    double value = info.feature_default;
+    reader.read_number(*table, path, leaf, value, info.rule);
+    info.set(scene, value, 0);
 }
 
 // [strain_limit] max_strain, a strain (0.1: springs are held within 10 % of their rest
@@ -175,9 +233,10 @@ void read_strain_limit(TomlReader& reader, const toml::table& root, Scene& scene
                     "max_strain alone");
         return;
     }
-    double value = 0.1;
+    const SceneKeyInfo& info = scene_key_info(SceneKey::strain_limit_max_strain);
+    double value = info.feature_default;
     if (!reader.read_number(*table, "strain_limit", old_name ? "max_stretch" : "max_strain", value,
-                            scene_rules::strain_limit_max_strain))
+                            info.rule))
         return;
     scene.strain_limit_max_strain = value;
     if (old_name)
@@ -189,20 +248,11 @@ void read_strain_limit(TomlReader& reader, const toml::table& root, Scene& scene
 }
 
 void read_forces_and_solver(TomlReader& reader, const toml::table& root, Scene& scene) {
-    if (const toml::table* forces = reader.sub_table(root, "", "forces")) {
-        reader.check_keys(*forces, "forces", {"gravity", "air_drag", "wind", "gust"});
-        reader.read_vec3(*forces, "forces", "gravity", scene.forces.gravity);
-        reader.read_number(*forces, "forces", "air_drag", scene.forces.air_drag,
-                           scene_rules::air_drag);
-        reader.read_vec3(*forces, "forces", "wind", scene.forces.wind);
-        reader.read_number(*forces, "forces", "gust", scene.forces.gust, scene_rules::gust);
-    }
-    if (const toml::table* solver = reader.sub_table(root, "", "solver")) {
-        reader.check_keys(*solver, "solver", {"integrator", "dt"});
-        int integrator = static_cast<int>(scene.solver.integrator);
-        reader.read_choice(*solver, "solver", "integrator", integrator_names, integrator);
-        scene.solver.integrator = static_cast<Integrator>(integrator);
-        reader.read_number(*solver, "solver", "dt", scene.solver.dt, scene_rules::dt);
+    for (const char* section : {"forces", "solver"}) {
+        if (const toml::table* table = reader.sub_table(root, "", section)) {
+            reader.check_keys(*table, section, section_keys(section));
+            read_plain_keys(reader, *table, section, scene);
+        }
     }
 }
 
@@ -220,39 +270,24 @@ void read_colliders(TomlReader& reader, const toml::table& root, Scene& scene) {
             reader.fail(entry, "colliders", "each collider must be a table");
             return;
         }
-        ColliderSpec collider;
-        reader.check_keys(
-            *table, "colliders",
-            {"type", "center", "radius", "point", "normal", "response", "restitution", "friction"});
-        int type = 0, response = 0;
+        reader.check_keys(*table, "colliders", section_keys("colliders", {"type"}));
+        int type = 0;
         reader.read_choice(*table, "colliders", "type", collider_type_names, type);
-        reader.read_vec3(*table, "colliders", "center", collider.center);
-        reader.read_number(*table, "colliders", "radius", collider.radius,
-                           scene_rules::collider_radius);
-        reader.read_vec3(*table, "colliders", "point", collider.point);
-        reader.read_vec3(*table, "colliders", "normal", collider.normal);
-        reader.read_choice(*table, "colliders", "response", contact_response_names, response);
-        reader.read_number(*table, "colliders", "restitution", collider.restitution,
-                           scene_rules::restitution);
-        reader.read_number(*table, "colliders", "friction", collider.friction,
-                           scene_rules::friction);
-        collider.type = static_cast<ColliderType>(type);
-        collider.response = static_cast<ContactResponse>(response);
+        scene.colliders.emplace_back().type = static_cast<ColliderType>(type);
+        const auto index = static_cast<std::uint32_t>(scene.colliders.size() - 1);
+        read_plain_keys(reader, *table, "colliders", scene, index);
         if (const toml::node* normal = table->get("normal");
-            normal && !reader.check(*normal, "colliders.normal", normal_problem(collider.normal)))
+            normal && !reader.check(*normal, "colliders.normal",
+                                    normal_problem(scene.colliders[index].normal)))
             return;
-        scene.colliders.push_back(collider);
     }
 }
 
 void read_camera(TomlReader& reader, const toml::table& root, Scene& scene) {
     const toml::table* camera = reader.sub_table(root, "", "camera");
     if (!camera) return;
-    reader.check_keys(*camera, "camera", {"position", "target", "fov_degrees"});
-    reader.read_vec3(*camera, "camera", "position", scene.camera.position);
-    reader.read_vec3(*camera, "camera", "target", scene.camera.target);
-    reader.read_number(*camera, "camera", "fov_degrees", scene.camera.fov_degrees,
-                       scene_rules::fov_degrees);
+    reader.check_keys(*camera, "camera", section_keys("camera"));
+    read_plain_keys(reader, *camera, "camera", scene);
 }
 
 // Writes one "KEY=VALUE" override into the document.
@@ -326,11 +361,9 @@ SceneLoadResult load_scene_text(std::string_view toml_text, std::string_view sou
         load_scene_mesh(reader, root, source_name, scene.cloth);
     const double spacing = mesh_spacing.value_or(scene.cloth.spacing);  // m
     read_springs(reader, root, scene);
-    read_optional_feature(reader, root, "tearing", "max_stretch", 1.6,
-                          scene_rules::tear_max_stretch, scene.tear_max_stretch);
+    read_optional_feature(reader, root, SceneKey::tear_max_stretch, scene);
     read_strain_limit(reader, root, scene);
-    read_optional_feature(reader, root, "self_collision", "thickness", 0.01,
-                          scene_rules::self_collision_thickness, scene.self_collision_thickness);
+    read_optional_feature(reader, root, SceneKey::self_collision_thickness, scene);
     if (!reader.failed() && scene.self_collision_thickness) {
         const toml::table& table = *root["self_collision"].as_table();
         const toml::node* node = table.get("thickness");
@@ -341,8 +374,8 @@ SceneLoadResult load_scene_text(std::string_view toml_text, std::string_view sou
     read_forces_and_solver(reader, root, scene);
     read_colliders(reader, root, scene);
     if (const toml::table* floor = reader.sub_table(root, "", "floor")) {
-        reader.check_keys(*floor, "floor", {"enabled"});
-        reader.read_bool(*floor, "floor", "enabled", scene.floor_enabled);
+        reader.check_keys(*floor, "floor", section_keys("floor"));
+        read_plain_keys(reader, *floor, "floor", scene);
     }
     read_camera(reader, root, scene);
     if (reader.failed()) {

@@ -1,7 +1,11 @@
 #include "sim/scene_writer.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
+
+#include "sim/scene_edit_toml.h"
+#include "sim/scene_keys.h"
 
 namespace weft {
 namespace {
@@ -12,31 +16,35 @@ std::string vec3(const Vec3d& v) {
     return text.append("]");
 }
 
-void spring_family(std::ostringstream& out, std::string_view name, const SpringFamilySpec& spec,
+// Writes the keys the key table lists under `section` as `leaf = value  # unit`, in the
+// table's order, except the keys `skip` names.
+void write_keys(std::ostringstream& out, const Scene& scene, std::string_view section,
+                std::uint32_t collider = 0, std::initializer_list<std::string_view> skip = {}) {
+    for (const SceneKeyInfo& info : scene_key_table()) {
+        const auto dot = info.name.rfind('.');
+        const std::string_view leaf = info.name.substr(dot + 1);
+        if (info.name.substr(0, dot) != section ||
+            std::find(skip.begin(), skip.end(), leaf) != skip.end())
+            continue;
+        out << leaf << " = " << scene_value_toml(info.get(scene, collider));
+        if (!info.unit.empty()) out << "  # " << info.unit;
+        out << "\n";
+    }
+}
+
+void spring_family(std::ostringstream& out, const Scene& scene, std::string_view name,
                    bool always_on) {
-    out << "\n[springs." << name << "]\n";
-    if (!always_on) out << "enabled = " << (spec.enabled ? "true" : "false") << "\n";
-    out << "stiffness = " << toml_number(spec.stiffness) << "  # N/m\n";
-    out << "damping = " << toml_number(spec.damping) << "  # N·s/m\n";
+    const std::string section = "springs." + std::string(name);
+    out << "\n[" << section << "]\n";
+    if (always_on)
+        write_keys(out, scene, section, 0, {"enabled"});
+    else
+        write_keys(out, scene, section);
 }
 
 // A grid's keys.
-void grid_cloth(std::ostringstream& out, const ClothSpec& cloth) {
-    out << "rows = " << cloth.rows << "\ncols = " << cloth.cols << "\n";
-    out << "spacing = " << toml_number(cloth.spacing) << "  # m\n";
-    out << "particle_mass = " << toml_number(cloth.particle_mass) << "  # kg\n";
-    out << "layout = \"" << layout_name(cloth.layout) << "\"\n";
-    out << "orientation = \"" << orientation_name(cloth.orientation) << "\"\n";
-    out << "origin = " << vec3(cloth.origin) << "  # m\n";
-    if (const char* preset = pin_preset_name(cloth.pin_preset)) {
-        out << "pins = \"" << preset << "\"\n";
-    } else {
-        out << "pins = [";
-        for (std::size_t p = 0; p < cloth.pin_list.size(); ++p)
-            out << (p ? ", " : "") << "[" << cloth.pin_list[p].row << ", " << cloth.pin_list[p].col
-                << "]";
-        out << "]\n";
-    }
+void grid_cloth(std::ostringstream& out, const Scene& scene) {
+    write_keys(out, scene, "cloth", 0, {"density"});  // a mesh's
 }
 
 // A mesh's keys: the grid's do not apply (the loader refuses them beside `mesh`).
@@ -96,12 +104,12 @@ std::string scene_to_toml(const Scene& scene) {
     if (!cloth.mesh.empty()) {
         mesh_cloth(out, cloth);
     } else {
-        grid_cloth(out, cloth);
+        grid_cloth(out, scene);
     }
 
-    spring_family(out, spring_family_names[0], scene.structural, true);
-    spring_family(out, spring_family_names[1], scene.shear, false);
-    spring_family(out, spring_family_names[2], scene.bend, false);
+    spring_family(out, scene, spring_family_names[0], true);
+    spring_family(out, scene, spring_family_names[1], false);
+    spring_family(out, scene, spring_family_names[2], false);
 
     if (scene.tear_max_stretch)
         out << "\n[tearing]\nmax_stretch = " << toml_number(*scene.tear_max_stretch) << "\n";
@@ -113,36 +121,27 @@ std::string scene_to_toml(const Scene& scene) {
             << "  # m\n";
 
     out << "\n[forces]\n";
-    out << "gravity = " << vec3(scene.forces.gravity) << "  # m/s²\n";
-    out << "air_drag = " << toml_number(scene.forces.air_drag) << "  # N·s/m per particle\n";
-    out << "wind = " << vec3(scene.forces.wind) << "  # m/s\n";
+    // gust only when the wind gusts, so a steady scene reads as it did before gusts.
     if (scene.forces.gust != 0.0)
-        out << "gust = " << toml_number(scene.forces.gust) << "  # share of the wind\n";
+        write_keys(out, scene, "forces");
+    else
+        write_keys(out, scene, "forces", 0, {"gust"});
 
     out << "\n[solver]\n";
-    out << "integrator = \"" << integrator_name(scene.solver.integrator) << "\"\n";
-    out << "dt = " << toml_number(scene.solver.dt) << "  # s\n";
+    write_keys(out, scene, "solver");
 
-    for (const ColliderSpec& collider : scene.colliders) {
+    for (std::uint32_t c = 0; c < scene.colliders.size(); ++c) {
         out << "\n[[colliders]]\n";
         // Both shapes' keys, so the collider reads back field for field whatever its type.
-        out << "type = \"" << collider_type_names[static_cast<std::size_t>(collider.type)]
+        out << "type = \"" << collider_type_names[static_cast<std::size_t>(scene.colliders[c].type)]
             << "\"\n";
-        out << "center = " << vec3(collider.center) << "  # m, sphere\n";
-        out << "radius = " << toml_number(collider.radius) << "  # m, sphere\n";
-        out << "point = " << vec3(collider.point) << "  # m, plane\n";
-        out << "normal = " << vec3(collider.normal) << "  # plane\n";
-        out << "response = \"" << contact_response_name(collider.response) << "\"\n";
-        out << "restitution = " << toml_number(collider.restitution) << "\n";
-        out << "friction = " << toml_number(collider.friction) << "\n";
+        write_keys(out, scene, "colliders", c);
     }
     // Written only when off, so a scene with the floor reads as it did before there was one.
     if (!scene.floor_enabled) out << "\n[floor]\nenabled = false\n";
 
     out << "\n[camera]\n";
-    out << "position = " << vec3(scene.camera.position) << "  # m\n";
-    out << "target = " << vec3(scene.camera.target) << "  # m\n";
-    out << "fov_degrees = " << toml_number(scene.camera.fov_degrees) << "\n";
+    write_keys(out, scene, "camera");
     return out.str();
 }
 

@@ -10,9 +10,9 @@
 #include <memory>
 #include <string_view>
 
-#include "sim/mesh_builder.h"
-#include "sim/obj_reader.h"
-#include "sim/simulation.h"
+#include "sim/build/mesh_builder.h"
+#include "sim/core/simulation.h"
+#include "sim/scene/obj_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string_view text(reinterpret_cast<const char*>(data), size);

@@ -11,9 +11,9 @@
 #include <string_view>
 #include <vector>
 
-#include "sim/obj_reader.h"
-#include "sim/scene_loader.h"
-#include "sim/simulation.h"
+#include "sim/core/simulation.h"
+#include "sim/scene/obj_reader.h"
+#include "sim/scene_io/scene_loader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string_view input(reinterpret_cast<const char*>(data), size);

@@ -14,7 +14,7 @@
 
 #include "app/demo_state.h"
 #include "app/session_record.h"
-#include "sim/scene_loader.h"
+#include "sim/scene_io/scene_loader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string_view text(reinterpret_cast<const char*>(data), size);

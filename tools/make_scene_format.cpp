@@ -1,5 +1,5 @@
 // weft-make-scene-format: writes docs/scene-format.md, the reference of every scene key, from
-// the key table (src/sim/scene_keys.cpp), so the reference cannot drift from what the loader,
+// the key table (src/sim/scene/scene_keys.cpp), so the reference cannot drift from what the loader,
 // --set and the panel accept. The test tools.scene_format runs it with --check.
 //
 //   weft-make-scene-format FILE           write the reference to FILE
@@ -9,7 +9,7 @@
 #include <sstream>
 #include <string>
 
-#include "sim/scene_keys.h"
+#include "sim/scene/scene_keys.h"
 
 int main(int argc, char** argv) {
     const char* usage =

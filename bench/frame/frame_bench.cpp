@@ -17,8 +17,8 @@
 
 #include "parallel/worker_pool.h"
 #include "raster/framebuffer.h"
-#include "sim/scene_loader.h"
-#include "sim/simulation.h"
+#include "sim/core/simulation.h"
+#include "sim/scene_io/scene_loader.h"
 #include "view/cloth_view.h"
 #include "view/frame_renderer.h"
 

@@ -10,8 +10,8 @@
 #include "app/status_text.h"
 #include "csv_file.h"
 #include "plot.h"
-#include "sim/divergence.h"
-#include "sim/energy.h"
+#include "sim/core/energy.h"
+#include "sim/guards/divergence.h"
 #include "study.h"
 
 namespace weft::bench {

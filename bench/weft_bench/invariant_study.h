@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace weft::bench {
 

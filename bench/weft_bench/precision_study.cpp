@@ -9,7 +9,7 @@
 #include "csv_file.h"
 #include "invariant_study.h"
 #include "plot.h"
-#include "sim/energy.h"
+#include "sim/core/energy.h"
 #include "study.h"
 
 namespace weft::bench {

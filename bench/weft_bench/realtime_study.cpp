@@ -17,7 +17,7 @@
 #include "plain_baseline.h"
 #include "plot.h"
 #include "raster/framebuffer.h"
-#include "sim/stability_limit.h"
+#include "sim/guards/stability_limit.h"
 #include "study.h"
 #include "view/frame_renderer.h"
 #include "xpbd_cloth.h"

@@ -7,10 +7,10 @@
 #include "app/session_record.h"
 #include "app/status_text.h"
 #include "csv_file.h"
-#include "sim/divergence.h"
-#include "sim/energy.h"
-#include "sim/scene_loader.h"
-#include "sim/scene_writer.h"
+#include "sim/core/energy.h"
+#include "sim/guards/divergence.h"
+#include "sim/scene_io/scene_loader.h"
+#include "sim/scene_io/scene_writer.h"
 #include "study.h"
 
 namespace weft::bench {

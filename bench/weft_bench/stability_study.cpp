@@ -8,9 +8,9 @@
 
 #include "csv_file.h"
 #include "plot.h"
-#include "sim/cloth_builder.h"
-#include "sim/energy.h"
-#include "sim/stability_limit.h"
+#include "sim/build/cloth_builder.h"
+#include "sim/core/energy.h"
+#include "sim/guards/stability_limit.h"
 #include "study.h"
 
 namespace weft::bench {

@@ -8,7 +8,7 @@
 #include <functional>
 #include <thread>
 
-#include "sim/scene_loader.h"
+#include "sim/scene_io/scene_loader.h"
 
 namespace weft::bench {
 

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "sim/scene.h"
-#include "sim/simulation.h"
+#include "sim/core/simulation.h"
+#include "sim/scene/scene.h"
 
 namespace weft::bench {
 

@@ -13,9 +13,9 @@
 #include "plain_baseline.h"
 #include "plot.h"
 #include "raster/framebuffer.h"
-#include "sim/cloth_builder.h"
-#include "sim/grid_force_pass.h"
-#include "sim/stability_limit.h"
+#include "sim/build/cloth_builder.h"
+#include "sim/grid/grid_force_pass.h"
+#include "sim/guards/stability_limit.h"
 #include "study.h"
 #include "view/frame_renderer.h"
 

@@ -27,8 +27,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "sim/cloth.h"
-#include "sim/force_pass.h"
+#include "sim/core/cloth.h"
+#include "sim/core/force_pass.h"
 
 namespace weft::bench {
 

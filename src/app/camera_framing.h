@@ -8,7 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include "app/camera_rig.h"
-#include "sim/cloth.h"
+#include "sim/core/cloth.h"
 
 namespace weft::app {
 

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "sim/drag.h"
-#include "sim/topology_edits.h"
+#include "sim/build/topology_edits.h"
+#include "sim/interaction/drag.h"
 
 namespace weft::app {
 

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "sim/picking.h"
-#include "sim/scene_edit.h"
-#include "sim/simulation.h"
+#include "sim/core/simulation.h"
+#include "sim/interaction/picking.h"
+#include "sim/scene/scene_edit.h"
 
 namespace weft::app {
 

@@ -3,7 +3,7 @@
 #include <charconv>
 #include <cmath>
 
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace weft {
 namespace {

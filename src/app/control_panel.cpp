@@ -19,8 +19,8 @@
 #include "app/screenshot_names.h"
 #include "app/session_record.h"
 #include "app/status_text.h"
-#include "sim/scene_rules.h"
-#include "sim/stability_limit.h"
+#include "sim/guards/stability_limit.h"
+#include "sim/scene/scene_rules.h"
 
 namespace weft::app {
 

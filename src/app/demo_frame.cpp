@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "app/status_text.h"
-#include "sim/energy.h"
+#include "sim/core/energy.h"
 
 namespace weft::app {
 

@@ -12,10 +12,10 @@
 #include "app/atomic_file.h"
 #include "app/hand_tools.h"
 #include "app/number_format.h"
-#include "sim/scene_edit_toml.h"
-#include "sim/scene_loader.h"
-#include "sim/scene_writer.h"
-#include "sim/state_hash.h"
+#include "sim/core/state_hash.h"
+#include "sim/scene_io/scene_edit_toml.h"
+#include "sim/scene_io/scene_loader.h"
+#include "sim/scene_io/scene_writer.h"
 
 namespace weft::app {
 namespace {

@@ -19,9 +19,9 @@
 #include "app/hand_tools.h"
 #include "app/session_record.h"
 #include "app/step_clock.h"
-#include "sim/recovery.h"
-#include "sim/scene_loader.h"
-#include "sim/simulation.h"
+#include "sim/core/recovery.h"
+#include "sim/core/simulation.h"
+#include "sim/scene_io/scene_loader.h"
 #include "view/cloth_view.h"
 #include "view/frame_renderer.h"
 

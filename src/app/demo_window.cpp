@@ -31,7 +31,7 @@
 #include "app/status_overlay.h"
 #include "app/status_text.h"
 #include "raster/png_writer.h"
-#include "sim/energy.h"
+#include "sim/core/energy.h"
 
 namespace weft::app {
 namespace {

@@ -1,6 +1,6 @@
 #include "app/grid_edit.h"
 
-#include "sim/scene_loader.h"
+#include "sim/scene_io/scene_loader.h"
 
 namespace weft::app {
 std::vector<SceneEdit> grid_edits(const ClothSpec& draft) {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "app/demo_state.h"
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace weft::app {
 

@@ -6,7 +6,7 @@
 #include <glm/vec2.hpp>
 #include <vector>
 
-#include "sim/topology_edits.h"
+#include "sim/build/topology_edits.h"
 
 namespace weft::app {
 

@@ -11,7 +11,7 @@
 #include <glm/vec2.hpp>
 
 #include "raster/camera.h"
-#include "sim/simulation.h"
+#include "sim/core/simulation.h"
 
 namespace weft::app {
 

@@ -21,10 +21,10 @@
 #include "app/state_dump.h"
 #include "app/status_text.h"
 #include "raster/png_writer.h"
-#include "sim/energy.h"
-#include "sim/scene_loader.h"
-#include "sim/simulation.h"
-#include "sim/state_hash.h"
+#include "sim/core/energy.h"
+#include "sim/core/simulation.h"
+#include "sim/core/state_hash.h"
+#include "sim/scene_io/scene_loader.h"
 #include "view/frame_renderer.h"
 
 namespace weft {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "app/command_line.h"
-#include "sim/scene.h"
+#include "sim/scene/scene.h"
 
 namespace weft {
 

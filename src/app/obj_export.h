@@ -9,7 +9,7 @@
 #include <ostream>
 #include <string>
 
-#include "sim/cloth.h"
+#include "sim/core/cloth.h"
 
 namespace weft::app {
 

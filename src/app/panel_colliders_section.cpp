@@ -8,7 +8,8 @@
 namespace weft::app {
 
 void colliders_section(DemoState& state) {
-    // The floor under the drawn ground (sim/floor.h), unless the scene's own ground plane is.
+    // The floor under the drawn ground (sim/collision/floor.h), unless the scene's own ground plane
+    // is.
     bool floor = state.simulation.scene().floor_enabled;
     if (ImGui::Checkbox("floor (the ground stops the cloth)", &floor))
         edit(state, {SceneKey::floor_enabled, floor});

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "sim/step_profile.h"
+#include "sim/core/step_profile.h"
 
 namespace weft::app {
 

@@ -12,11 +12,11 @@
 #include <fstream>
 #include <sstream>
 
-#include "sim/scene_edit_toml.h"
-#include "sim/scene_loader.h"
-#include "sim/scene_writer.h"
-#include "sim/toml_input_guard.h"
-#include "sim/topology_edits.h"
+#include "sim/build/topology_edits.h"
+#include "sim/scene_io/scene_edit_toml.h"
+#include "sim/scene_io/scene_loader.h"
+#include "sim/scene_io/scene_writer.h"
+#include "sim/scene_io/toml_input_guard.h"
 
 namespace weft::app {
 namespace {

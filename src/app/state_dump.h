@@ -4,7 +4,7 @@
 
 #include <ostream>
 
-#include "sim/cloth.h"
+#include "sim/core/cloth.h"
 
 namespace weft {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-#include "sim/simulation.h"
+#include "sim/core/simulation.h"
 
 namespace weft::app {
 

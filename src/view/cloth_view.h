@@ -11,7 +11,7 @@
 #include "raster/colour.h"
 #include "raster/mesh.h"
 #include "raster/mesh_renderer.h"
-#include "sim/cloth.h"
+#include "sim/core/cloth.h"
 
 namespace weft::view {
 

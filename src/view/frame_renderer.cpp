@@ -8,7 +8,7 @@
 #include "raster/line_renderer.h"
 #include "raster/planar_shadow.h"
 #include "raster/sphere.h"
-#include "sim/floor.h"
+#include "sim/collision/floor.h"
 
 namespace weft::view {
 

@@ -6,9 +6,9 @@
 #include "raster/camera.h"
 #include "raster/framebuffer.h"
 #include "raster/mesh_renderer.h"
-#include "sim/cloth.h"
-#include "sim/colliders.h"
-#include "sim/scene.h"
+#include "sim/collision/colliders.h"
+#include "sim/core/cloth.h"
+#include "sim/scene/scene.h"
 #include "view/cloth_view.h"
 
 namespace weft::view {
@@ -34,7 +34,7 @@ struct FrameOptions {
 raster::Camera scene_camera(const Scene& scene);
 
 // Where the ground grid goes: on the floor, the scene's ground plane or the one the simulation
-// adds (sim/floor.h), or where that floor would be in a scene without one.
+// adds (sim/collision/floor.h), or where that floor would be in a scene without one.
 float ground_height_below(const Cloth& cloth, std::span<const Collider> colliders = {});
 
 // Draws the frame; spheres among `colliders` are drawn as shaded balls (planes show as the

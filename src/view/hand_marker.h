@@ -5,8 +5,8 @@
 
 #include "raster/camera.h"
 #include "raster/framebuffer.h"
-#include "sim/cloth.h"
-#include "sim/drag.h"
+#include "sim/core/cloth.h"
+#include "sim/interaction/drag.h"
 
 namespace weft::view {
 

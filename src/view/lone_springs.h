@@ -9,7 +9,7 @@
 #include <glm/vec2.hpp>
 
 #include "raster/mesh.h"
-#include "sim/cloth.h"
+#include "sim/core/cloth.h"
 
 namespace weft::view {
 

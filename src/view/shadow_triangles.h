@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "raster/mesh.h"
-#include "sim/cloth.h"
+#include "sim/core/cloth.h"
 
 namespace weft::view {
 

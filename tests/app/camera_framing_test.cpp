@@ -10,7 +10,7 @@
 
 #include "app/camera_framing.h"
 #include "raster/camera.h"
-#include "sim/cloth_builder.h"
+#include "sim/build/cloth_builder.h"
 
 namespace weft::app {
 namespace {

@@ -6,7 +6,7 @@
 #include <numeric>
 #include <vector>
 
-#include "sim/cloth.h"
+#include "sim/core/cloth.h"
 
 namespace weft::app {
 

@@ -13,7 +13,7 @@
 #include "../sim/test_scenes.h"
 #include "app/demo_state.h"
 #include "shipped_demo.h"
-#include "sim/divergence.h"
+#include "sim/guards/divergence.h"
 
 namespace weft::app {
 namespace {

@@ -18,10 +18,10 @@
 #include "cloth_pieces.h"
 #include "raster/framebuffer.h"
 #include "shipped_demo.h"
-#include "sim/energy.h"
-#include "sim/scene_loader.h"
-#include "sim/stability_limit.h"
-#include "sim/state_hash.h"
+#include "sim/core/energy.h"
+#include "sim/core/state_hash.h"
+#include "sim/guards/stability_limit.h"
+#include "sim/scene_io/scene_loader.h"
 
 namespace weft::app {
 namespace {

@@ -6,8 +6,8 @@
 
 #include "app/demo_state.h"
 #include "shipped_demo.h"
-#include "sim/divergence.h"
-#include "sim/energy.h"
+#include "sim/core/energy.h"
+#include "sim/guards/divergence.h"
 
 namespace weft::app {
 namespace {

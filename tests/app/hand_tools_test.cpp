@@ -9,7 +9,7 @@
 #include <set>
 
 #include "app/hand_tools.h"
-#include "sim/topology_edits.h"
+#include "sim/build/topology_edits.h"
 
 namespace weft::app {
 namespace {

@@ -9,8 +9,8 @@
 #include <tuple>
 
 #include "app/obj_export.h"
-#include "sim/obj_reader.h"
-#include "sim/simulation.h"
+#include "sim/core/simulation.h"
+#include "sim/scene/obj_reader.h"
 
 namespace weft::app {
 namespace {

@@ -13,7 +13,7 @@
 #include "app/edit_answer.h"
 #include "app/grid_edit.h"
 #include "shipped_demo.h"
-#include "sim/state_hash.h"
+#include "sim/core/state_hash.h"
 
 namespace weft::app {
 namespace {

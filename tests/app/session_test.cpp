@@ -11,9 +11,9 @@
 #include "app/demo_state.h"
 #include "app/session_record.h"
 #include "shipped_demo.h"
-#include "sim/scene_loader.h"
-#include "sim/state_hash.h"
-#include "sim/topology_edits.h"
+#include "sim/build/topology_edits.h"
+#include "sim/core/state_hash.h"
+#include "sim/scene_io/scene_loader.h"
 
 namespace weft::app {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "app/demo_state.h"
-#include "sim/scene_loader.h"
+#include "sim/scene_io/scene_loader.h"
 
 namespace weft::app {
 

@@ -5,9 +5,9 @@
 #include <cmath>
 
 #include "app/status_text.h"
-#include "sim/energy.h"
-#include "sim/scene.h"
-#include "sim/simulation.h"
+#include "sim/core/energy.h"
+#include "sim/core/simulation.h"
+#include "sim/scene/scene.h"
 
 namespace weft::app {
 namespace {

@@ -7,7 +7,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "sim/simulation.h"
+#include "sim/core/simulation.h"
 #include "weft_bench/plain_baseline.h"
 
 namespace weft::bench {

@@ -13,7 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include "../sim/test_scenes.h"
-#include "sim/simulation.h"
+#include "sim/core/simulation.h"
 #include "weft_bench/xpbd_cloth.h"
 
 namespace weft::bench {

@@ -1,7 +1,7 @@
 // The coarsest level's exact solve (sim/banded_cholesky.h) against an independent truth: a
 // band matrix built as Bᵀ B + I from a random banded B is symmetric positive definite, so
 // A x = b has one solution; b is made from a chosen x and the solve must give it back.
-#include "sim/banded_cholesky.h"
+#include "sim/integrators/implicit/banded_cholesky.h"
 
 #include <gtest/gtest.h>
 

@@ -3,8 +3,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "sim/cloth_builder.h"
-#include "sim/simulation.h"
+#include "sim/build/cloth_builder.h"
+#include "sim/core/simulation.h"
 
 namespace weft {
 namespace {

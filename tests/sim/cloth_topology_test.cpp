@@ -6,7 +6,7 @@
 // with a new version, and leaves every other copy's as it was; a rollback shares again.
 #include <gtest/gtest.h>
 
-#include "sim/simulation.h"
+#include "sim/core/simulation.h"
 
 namespace weft {
 namespace {

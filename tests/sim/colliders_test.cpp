@@ -6,7 +6,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
-#include "sim/simulation.h"
+#include "sim/core/simulation.h"
 #include "test_scenes.h"
 
 namespace weft {

@@ -9,8 +9,8 @@
 #include <glm/geometric.hpp>
 #include <string>
 
-#include "sim/scene_loader.h"
-#include "sim/simulation.h"
+#include "sim/core/simulation.h"
+#include "sim/scene_io/scene_loader.h"
 
 namespace weft {
 namespace {

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <vector>
 
-#include "sim/simulation.h"
+#include "sim/core/simulation.h"
 #include "test_scenes.h"
 
 namespace weft {

@@ -5,10 +5,10 @@
 #include <utility>
 
 #include "same_bits.h"
-#include "sim/grid_force_pass.h"
-#include "sim/scene_loader.h"
-#include "sim/simulation.h"
-#include "sim/state_hash.h"
+#include "sim/core/simulation.h"
+#include "sim/core/state_hash.h"
+#include "sim/grid/grid_force_pass.h"
+#include "sim/scene_io/scene_loader.h"
 #include "test_scenes.h"
 
 namespace weft {

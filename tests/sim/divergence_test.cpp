@@ -5,11 +5,11 @@
 #include <limits>
 #include <string>
 
-#include "sim/cloth_builder.h"
-#include "sim/divergence.h"
-#include "sim/grid_force_pass.h"
-#include "sim/scene_loader.h"
-#include "sim/simulation.h"
+#include "sim/build/cloth_builder.h"
+#include "sim/core/simulation.h"
+#include "sim/grid/grid_force_pass.h"
+#include "sim/guards/divergence.h"
+#include "sim/scene_io/scene_loader.h"
 #include "test_scenes.h"
 
 namespace weft {

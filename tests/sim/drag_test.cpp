@@ -9,11 +9,11 @@
 #include <glm/geometric.hpp>
 #include <string>
 
-#include "sim/cloth_builder.h"
-#include "sim/divergence.h"
-#include "sim/drag.h"
-#include "sim/scene_loader.h"
-#include "sim/simulation.h"
+#include "sim/build/cloth_builder.h"
+#include "sim/core/simulation.h"
+#include "sim/guards/divergence.h"
+#include "sim/interaction/drag.h"
+#include "sim/scene_io/scene_loader.h"
 
 namespace weft {
 namespace {

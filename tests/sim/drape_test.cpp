@@ -8,8 +8,8 @@
 #include <glm/geometric.hpp>
 #include <vector>
 
-#include "sim/energy.h"
-#include "sim/simulation.h"
+#include "sim/core/energy.h"
+#include "sim/core/simulation.h"
 
 namespace weft {
 namespace {

@@ -9,9 +9,9 @@
 #include <glm/geometric.hpp>
 #include <string>
 
-#include "sim/divergence.h"
-#include "sim/energy.h"
-#include "sim/simulation.h"
+#include "sim/core/energy.h"
+#include "sim/core/simulation.h"
+#include "sim/guards/divergence.h"
 #include "test_scenes.h"
 
 namespace weft {

@@ -8,12 +8,12 @@
 #include <cmath>
 #include <string>
 
-#include "sim/energy.h"
-#include "sim/floor.h"
-#include "sim/scene_loader.h"
-#include "sim/scene_writer.h"
-#include "sim/simulation.h"
-#include "sim/state_hash.h"
+#include "sim/collision/floor.h"
+#include "sim/core/energy.h"
+#include "sim/core/simulation.h"
+#include "sim/core/state_hash.h"
+#include "sim/scene_io/scene_loader.h"
+#include "sim/scene_io/scene_writer.h"
 
 namespace weft {
 namespace {

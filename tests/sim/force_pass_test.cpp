@@ -4,8 +4,8 @@
 #include <glm/geometric.hpp>
 
 #include "loaded_cloth.h"
-#include "sim/cloth_builder.h"
-#include "sim/force_pass.h"
+#include "sim/build/cloth_builder.h"
+#include "sim/core/force_pass.h"
 
 namespace weft {
 namespace {

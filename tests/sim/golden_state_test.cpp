@@ -9,9 +9,9 @@
 #include <cstdio>
 #include <string>
 
-#include "sim/scene_loader.h"
-#include "sim/simulation.h"
-#include "sim/state_hash.h"
+#include "sim/core/simulation.h"
+#include "sim/core/state_hash.h"
+#include "sim/scene_io/scene_loader.h"
 
 namespace weft {
 namespace {

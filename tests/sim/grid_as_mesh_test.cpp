@@ -15,10 +15,10 @@
 #include <vector>
 
 #include "loaded_cloth.h"
-#include "sim/cloth_builder.h"
-#include "sim/scene_loader.h"
-#include "sim/simulation.h"
-#include "sim/state_hash.h"
+#include "sim/build/cloth_builder.h"
+#include "sim/core/simulation.h"
+#include "sim/core/state_hash.h"
+#include "sim/scene_io/scene_loader.h"
 
 namespace weft {
 namespace {

@@ -8,10 +8,10 @@
 #include <limits>
 
 #include "loaded_cloth.h"
-#include "sim/cloth_builder.h"
-#include "sim/force_pass.h"
-#include "sim/grid_force_pass.h"
-#include "sim/topology_edits.h"
+#include "sim/build/cloth_builder.h"
+#include "sim/build/topology_edits.h"
+#include "sim/core/force_pass.h"
+#include "sim/grid/grid_force_pass.h"
 #include "test_scenes.h"
 
 namespace weft {

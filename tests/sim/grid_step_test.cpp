@@ -10,15 +10,15 @@
 #include <limits>
 
 #include "loaded_cloth.h"
-#include "sim/cloth_builder.h"
-#include "sim/colliders.h"
-#include "sim/drag.h"
-#include "sim/grid_force_pass.h"
+#include "sim/build/cloth_builder.h"
+#include "sim/build/topology_edits.h"
+#include "sim/collision/colliders.h"
+#include "sim/core/simulation.h"
+#include "sim/core/state_hash.h"
+#include "sim/grid/grid_force_pass.h"
 #include "sim/integrators/integrator.h"
-#include "sim/scene_loader.h"
-#include "sim/simulation.h"
-#include "sim/state_hash.h"
-#include "sim/topology_edits.h"
+#include "sim/interaction/drag.h"
+#include "sim/scene_io/scene_loader.h"
 #include "test_scenes.h"
 
 namespace weft {

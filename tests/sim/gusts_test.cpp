@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sim/gusts.h"
-#include "sim/scene_loader.h"
+#include "sim/core/gusts.h"
+#include "sim/scene_io/scene_loader.h"
 
 namespace weft {
 namespace {

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
-#include "sim/cloth_builder.h"
-#include "sim/divergence.h"
-#include "sim/simulation.h"
-#include "sim/stability_limit.h"
+#include "sim/build/cloth_builder.h"
+#include "sim/core/simulation.h"
+#include "sim/guards/divergence.h"
+#include "sim/guards/stability_limit.h"
 #include "test_scenes.h"
 
 namespace weft {

@@ -10,11 +10,11 @@
 #include <glm/geometric.hpp>
 
 #include "same_bits.h"
-#include "sim/divergence.h"
-#include "sim/drag.h"
-#include "sim/picking.h"
-#include "sim/simulation.h"
-#include "sim/state_hash.h"
+#include "sim/core/simulation.h"
+#include "sim/core/state_hash.h"
+#include "sim/guards/divergence.h"
+#include "sim/interaction/drag.h"
+#include "sim/interaction/picking.h"
 
 namespace weft {
 namespace {

@@ -8,12 +8,12 @@
 #include <random>
 #include <vector>
 
-#include "sim/cloth_builder.h"
-#include "sim/divergence.h"
-#include "sim/force_pass.h"
-#include "sim/scene_loader.h"
-#include "sim/simulation.h"
-#include "sim/stability_limit.h"
+#include "sim/build/cloth_builder.h"
+#include "sim/core/force_pass.h"
+#include "sim/core/simulation.h"
+#include "sim/guards/divergence.h"
+#include "sim/guards/stability_limit.h"
+#include "sim/scene_io/scene_loader.h"
 #include "test_scenes.h"
 
 namespace weft {

@@ -9,11 +9,11 @@
 #include <random>
 
 #include "same_bits.h"
-#include "sim/divergence.h"
-#include "sim/drag.h"
-#include "sim/scene_loader.h"
-#include "sim/simulation.h"
-#include "sim/state_hash.h"
+#include "sim/core/simulation.h"
+#include "sim/core/state_hash.h"
+#include "sim/guards/divergence.h"
+#include "sim/interaction/drag.h"
+#include "sim/scene_io/scene_loader.h"
 #include "test_scenes.h"
 
 namespace weft {

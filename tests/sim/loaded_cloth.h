@@ -6,8 +6,8 @@
 #include <random>
 #include <vector>
 
-#include "sim/cloth.h"
-#include "sim/force_pass.h"
+#include "sim/core/cloth.h"
+#include "sim/core/force_pass.h"
 
 namespace weft::testing {
 

@@ -9,9 +9,9 @@
 #include <sstream>
 #include <tuple>
 
-#include "sim/cloth_builder.h"
-#include "sim/mesh_builder.h"
-#include "sim/simulation.h"
+#include "sim/build/cloth_builder.h"
+#include "sim/build/mesh_builder.h"
+#include "sim/core/simulation.h"
 
 namespace weft {
 namespace {

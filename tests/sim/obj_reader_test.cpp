@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "sim/obj_reader.h"
-#include "sim/scene_loader.h"
+#include "sim/scene/obj_reader.h"
+#include "sim/scene_io/scene_loader.h"
 
 namespace weft {
 namespace {

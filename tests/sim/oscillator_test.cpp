@@ -1,7 +1,7 @@
 // Every integrator against the closed-form motion of a mass hanging from a spring.
 #include <gtest/gtest.h>
 
-#include "sim/simulation.h"
+#include "sim/core/simulation.h"
 #include "test_scenes.h"
 
 namespace weft {

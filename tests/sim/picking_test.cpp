@@ -1,9 +1,9 @@
 // Picking: a ray grabs the cloth only where it actually meets an intact triangle.
 #include <gtest/gtest.h>
 
-#include "sim/cloth_builder.h"
-#include "sim/picking.h"
-#include "sim/topology_edits.h"
+#include "sim/build/cloth_builder.h"
+#include "sim/build/topology_edits.h"
+#include "sim/interaction/picking.h"
 
 namespace weft {
 namespace {

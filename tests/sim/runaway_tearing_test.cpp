@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "sim/drag.h"
-#include "sim/scene_loader.h"
-#include "sim/simulation.h"
+#include "sim/core/simulation.h"
+#include "sim/interaction/drag.h"
+#include "sim/scene_io/scene_loader.h"
 
 namespace weft {
 namespace {

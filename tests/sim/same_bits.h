@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-#include "sim/grid_force_pass.h"
+#include "sim/grid/grid_force_pass.h"
 #include "test_scenes.h"
 
 namespace weft::testing {

@@ -3,10 +3,10 @@
 // key and value in a file (as --set), and must give the scene the loader gives.
 #include <gtest/gtest.h>
 
-#include "sim/scene_edit.h"
-#include "sim/scene_edit_toml.h"
-#include "sim/scene_loader.h"
-#include "sim/scene_writer.h"
+#include "sim/scene/scene_edit.h"
+#include "sim/scene_io/scene_edit_toml.h"
+#include "sim/scene_io/scene_loader.h"
+#include "sim/scene_io/scene_writer.h"
 
 namespace weft {
 namespace {

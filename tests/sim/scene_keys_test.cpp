@@ -6,9 +6,9 @@
 
 #include <string>
 
-#include "sim/scene_edit_toml.h"
-#include "sim/scene_keys.h"
-#include "sim/scene_loader.h"
+#include "sim/scene/scene_keys.h"
+#include "sim/scene_io/scene_edit_toml.h"
+#include "sim/scene_io/scene_loader.h"
 
 namespace weft {
 namespace {

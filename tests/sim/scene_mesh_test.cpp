@@ -7,13 +7,13 @@
 #include <fstream>
 #include <limits>
 
-#include "sim/cloth_builder.h"
-#include "sim/colliders.h"
-#include "sim/divergence.h"
-#include "sim/obj_reader.h"
-#include "sim/scene_loader.h"
-#include "sim/scene_writer.h"
-#include "sim/simulation.h"
+#include "sim/build/cloth_builder.h"
+#include "sim/collision/colliders.h"
+#include "sim/core/simulation.h"
+#include "sim/guards/divergence.h"
+#include "sim/scene/obj_reader.h"
+#include "sim/scene_io/scene_loader.h"
+#include "sim/scene_io/scene_writer.h"
 
 namespace weft {
 namespace {

@@ -3,8 +3,8 @@
 
 #include <filesystem>
 
-#include "sim/colliders.h"
-#include "sim/scene_loader.h"
+#include "sim/collision/colliders.h"
+#include "sim/scene_io/scene_loader.h"
 
 namespace weft {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <filesystem>
 
-#include "sim/scene_loader.h"
-#include "sim/scene_writer.h"
+#include "sim/scene_io/scene_loader.h"
+#include "sim/scene_io/scene_writer.h"
 
 namespace weft {
 namespace {

@@ -7,11 +7,11 @@
 #include <limits>
 #include <random>
 
-#include "sim/cloth_builder.h"
-#include "sim/self_collision.h"
-#include "sim/simulation.h"
-#include "sim/sweep_watch.h"
-#include "sim/topology_edits.h"
+#include "sim/build/cloth_builder.h"
+#include "sim/build/topology_edits.h"
+#include "sim/collision/self_collision.h"
+#include "sim/core/simulation.h"
+#include "sim/guards/sweep_watch.h"
 
 namespace weft {
 namespace {

@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "sim/divergence.h"
-#include "sim/drag.h"
-#include "sim/scene_loader.h"
-#include "sim/simulation.h"
-#include "sim/stability_limit.h"
+#include "sim/core/simulation.h"
+#include "sim/guards/divergence.h"
+#include "sim/guards/stability_limit.h"
+#include "sim/interaction/drag.h"
+#include "sim/scene_io/scene_loader.h"
 
 namespace weft {
 namespace {

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
-#include "sim/cloth_builder.h"
-#include "sim/simulation.h"
-#include "sim/stability_limit.h"
+#include "sim/build/cloth_builder.h"
+#include "sim/core/simulation.h"
+#include "sim/guards/stability_limit.h"
 #include "test_scenes.h"
 
 namespace weft {

@@ -5,10 +5,10 @@
 #include <glm/geometric.hpp>
 
 #include "app/profile_text.h"
-#include "sim/drag.h"
-#include "sim/scene_loader.h"
-#include "sim/simulation.h"
-#include "sim/state_hash.h"
+#include "sim/core/simulation.h"
+#include "sim/core/state_hash.h"
+#include "sim/interaction/drag.h"
+#include "sim/scene_io/scene_loader.h"
 
 namespace weft {
 namespace {

@@ -5,10 +5,10 @@
 #include <glm/geometric.hpp>
 #include <string>
 
-#include "sim/cloth_builder.h"
-#include "sim/scene_loader.h"
-#include "sim/simulation.h"
-#include "sim/strain_limit.h"
+#include "sim/build/cloth_builder.h"
+#include "sim/constraints/strain_limit.h"
+#include "sim/core/simulation.h"
+#include "sim/scene_io/scene_loader.h"
 #include "test_scenes.h"
 
 namespace weft {

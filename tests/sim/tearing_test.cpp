@@ -3,9 +3,9 @@
 
 #include <glm/geometric.hpp>
 
-#include "sim/cloth_builder.h"
-#include "sim/simulation.h"
-#include "sim/tearing.h"
+#include "sim/build/cloth_builder.h"
+#include "sim/constraints/tearing.h"
+#include "sim/core/simulation.h"
 #include "test_scenes.h"
 
 namespace weft {

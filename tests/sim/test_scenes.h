@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "sim/grid_force_pass.h"
-#include "sim/scene.h"
-#include "sim/simulation.h"
+#include "sim/core/simulation.h"
+#include "sim/grid/grid_force_pass.h"
+#include "sim/scene/scene.h"
 
 namespace weft::testing {
 

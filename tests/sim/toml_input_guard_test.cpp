@@ -6,8 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "sim/scene_loader.h"
-#include "sim/toml_input_guard.h"
+#include "sim/scene_io/scene_loader.h"
+#include "sim/scene_io/toml_input_guard.h"
 
 namespace weft {
 namespace {

@@ -5,8 +5,8 @@
 
 #include <vector>
 
-#include "sim/cloth_builder.h"
-#include "sim/simulation.h"
+#include "sim/build/cloth_builder.h"
+#include "sim/core/simulation.h"
 
 namespace weft {
 namespace {

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sim/cloth_builder.h"
-#include "sim/drag.h"
+#include "sim/build/cloth_builder.h"
+#include "sim/interaction/drag.h"
 #include "view/hand_marker.h"
 
 namespace weft::view {

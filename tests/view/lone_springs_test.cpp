@@ -4,8 +4,8 @@
 
 #include <algorithm>
 
-#include "sim/cloth_builder.h"
-#include "sim/scene_loader.h"
+#include "sim/build/cloth_builder.h"
+#include "sim/scene_io/scene_loader.h"
 #include "view/cloth_view.h"
 #include "view/frame_renderer.h"
 

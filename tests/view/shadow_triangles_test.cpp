@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sim/cloth_builder.h"
-#include "sim/scene_loader.h"
+#include "sim/build/cloth_builder.h"
+#include "sim/scene_io/scene_loader.h"
 #include "view/shadow_triangles.h"
 
 namespace weft::view {

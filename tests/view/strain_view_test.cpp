@@ -4,8 +4,8 @@
 // underside where the surface won the depth test).
 #include <gtest/gtest.h>
 
-#include "sim/scene_loader.h"
-#include "sim/simulation.h"
+#include "sim/core/simulation.h"
+#include "sim/scene_io/scene_loader.h"
 #include "view/frame_renderer.h"
 
 namespace weft::view {

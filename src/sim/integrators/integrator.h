@@ -9,12 +9,12 @@
 #include <optional>
 #include <vector>
 
-#include "sim/cloth.h"
-#include "sim/force_pass.h"
-#include "sim/grid_force_pass.h"
-#include "sim/integrators/implicit_grid_solve.h"
-#include "sim/scene.h"
-#include "sim/step_profile.h"
+#include "sim/core/cloth.h"
+#include "sim/core/force_pass.h"
+#include "sim/core/step_profile.h"
+#include "sim/grid/grid_force_pass.h"
+#include "sim/integrators/implicit/implicit_grid_solve.h"
+#include "sim/scene/scene.h"
 
 namespace weft {
 

@@ -1,0 +1,278 @@
+// Implicit (backward) Euler, linearised once per step (Baraff & Witkin 1998):
+//
+//   (M - h ∂f/∂v - h² ∂f/∂x) Δv = h (f0 + h ∂f/∂x v0),   v1 = v0 + Δv,   x1 = x0 + h v1
+//
+// First order and unconditionally stable on linear springs, at the price of one sparse
+// linear solve per step; it damps motion (numerical dissipation grows with h ω).
+//
+// The Jacobians, per spring with d = x_j - x_i, l = |d|, u = d / l:
+//   ∂f_i/∂x_j = k [u uᵀ + (1 - L/l)(I - u uᵀ)],   ∂f_i/∂v_j = c u uᵀ,
+// with ∂f_i/∂x_i, ∂f_i/∂v_i their negatives; air drag adds -air_drag I to ∂f/∂v. The
+// transverse term (1 - L/l) is clamped at 0 for compressed springs: negative, it makes the
+// system indefinite and conjugate gradient unreliable (Choi & Ko 2002 discuss the buckling
+// behind it). Repulsion contacts are taken explicitly, in f0. The hand's particles
+// (drag.h) are constrained: their velocities are prescribed, filtered like pins.
+//
+// The system matrix A = M + h C + h² K is symmetric positive definite; it is never
+// assembled. Conjugate gradient multiplies by it spring by spring, with pinned particles
+// filtered out of every vector (Baraff & Witkin's constraint filter for fully constrained
+// particles), warm-started from the previous step's Δv, until the residual is below
+// implicit_cg_tolerance × |b| or implicit_cg_max_iterations is reached.
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "sim/core/chunked_reduce.h"
+#include "sim/guards/divergence.h"
+#include "sim/integrators/integrator.h"
+
+namespace weft {
+namespace {
+
+double inner(std::span<const Vec3> a, std::span<const Vec3> b) {
+    double sum = 0.0;
+    for (std::size_t p = 0; p < a.size(); ++p) sum += glm::dot(a[p], b[p]);
+    return sum;
+}
+
+}  // namespace
+
+void multiply_implicit_system(const Cloth& cloth, const IntegratorWorkspace& work, double air_drag,
+                              double dt, std::span<const Vec3> vector, std::span<Vec3> product,
+                              std::span<const std::uint32_t> held) {
+    const std::size_t count = cloth.particle_count();
+    for (std::size_t p = 0; p < count; ++p)
+        product[p] = (cloth.topology().masses[p] + dt * air_drag) * vector[p];
+    std::size_t s = 0;
+    for (const SpringGroup& group : cloth.topology().spring_groups) {
+        for (const Spring& spring : group.springs) {
+            const ImplicitSpringTerms& terms = work.implicit_springs[s++];
+            // (h² K + h C) applied to the relative vector of the two ends.
+            const Vec3 relative = vector[spring.i] - vector[spring.j];
+            const Vec3 block =
+                terms.isotropic * relative +
+                (terms.along * glm::dot(terms.direction, relative)) * terms.direction;
+            product[spring.i] += block;
+            product[spring.j] -= block;
+        }
+    }
+    for (std::uint32_t p : cloth.topology().pinned) product[p] = Vec3(0.0);
+    for (std::uint32_t p : held) product[p] = Vec3(0.0);
+}
+
+namespace {
+
+// One linearised step of dt, by the structured solve where the cloth is a grid, else by the
+// general one below.
+void take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
+                          IntegratorWorkspace& work);
+
+// Whether some live spring is longer than `ratio` rest lengths: the stencil's vectorised
+// test first, which almost always settles it, then the exact one.
+bool some_spring_longer_than(const Cloth& cloth, double ratio, WorkerPool* pool) {
+    const std::optional<bool> maybe = grid_springs_maybe_longer_than(cloth, ratio, pool);
+    if (maybe && !*maybe) return false;
+    return largest_stretch_ratio(cloth, pool) > ratio;
+}
+
+// The largest error of the step's linearisation over the springs that end the step longer
+// than `ratio` rest lengths, in rest lengths: for each, how far its force at the end of the
+// step, k (|d1| - L) d1 / |d1|, is from what the step assumed, f(d0) + K(d0) (d1 - d0) (K as
+// in the header, a compressed spring's negative transverse term left out as in the step),
+// divided by k L. `start`: the positions x0.
+//
+// Shorter springs are left out. A compressed spring's force is at most k L, so its error
+// cannot run away, but it is large by design where a fold turns one over (the step drops its
+// negative transverse term); counted, the bend springs in a fold kept a sheet under the hand
+// splitting to the deepest level on most steps without the split changing anything.
+double largest_linearisation_error(const Cloth& cloth, std::span<const Vec3> start, double ratio,
+                                   WorkerPool* pool) {
+    double largest = 0.0;
+    for (const SpringGroup& group : cloth.topology().spring_groups)
+        largest = reduce_in_chunks(
+            pool, group.springs.size(), largest,
+            [&](std::size_t begin, std::size_t end) {
+                double part = 0.0;
+                for (std::size_t k = begin; k < end; ++k) {
+                    const Spring& spring = group.springs[k];
+                    const Vec3 before = start[spring.j] - start[spring.i];
+                    const Vec3 after = cloth.positions[spring.j] - cloth.positions[spring.i];
+                    const double l0 = glm::length(before), l1 = glm::length(after);
+                    if (!(l0 > 0.0) || !(l1 > ratio * spring.rest_length)) continue;
+                    const Vec3 u = before / l0, change = after - before;
+                    const double along = glm::dot(u, change);
+                    const double transverse = std::max(0.0, 1.0 - spring.rest_length / l0);
+                    const Vec3 assumed = (l0 - spring.rest_length) * u + along * u +
+                                         transverse * (change - along * u);
+                    const Vec3 actual = (l1 - spring.rest_length) / l1 * after;
+                    part = std::max(part, glm::length(actual - assumed) / spring.rest_length);
+                }
+                return part;
+            },
+            [](double a, double b) { return std::max(a, b); });
+    return largest;
+}
+
+// The step of dt, or, when its linearisation fails it, two of dt / 2 (each of which may
+// split again, down to dt / 2^max_split_depth). The linearised step sees a spring's stiffness
+// only as it is at the start: a spring at its rest length has none across itself, so a
+// flat sheet released at dt = 1/30 s falls 2.4 spacings in its first step everywhere but at
+// the pins, and the springs beside them come out 2.5 rest lengths long (256², cloth_256
+// material) where the step assumed no force at all; the next steps run away. So a step after
+// which some spring is longer than split_stretch_ratio rest lengths (a pass that almost
+// never finds one, vectorised) and some spring's force is further than split_force_error
+// × k L from what the step assumed is taken again in halves: the error of the linearisation
+// falls as the square of the step's motion. A hand pulling a sheet taut stretches its
+// springs along themselves, where the linearisation is close to exact, and is not split.
+// Returns the depth of the finest piece taken.
+int step_or_split(Cloth& cloth, const ForceField& field, double dt, IntegratorWorkspace& work,
+                  int depth) {
+    const ImplicitSolveSettings& settings = work.implicit_settings;
+    const bool may_split = depth < settings.max_split_depth && settings.split_stretch_ratio > 1.0;
+    PhaseClock clock(work.profiling);
+    double timed_inside = 0.0;  // the linearised step times its own phases
+    if (may_split) {
+        work.implicit_step_start_positions.resize(cloth.particle_count());
+        work.implicit_step_start_velocities.resize(cloth.particle_count());
+        for_particle_ranges(work, cloth.particle_count(), [&](std::size_t begin, std::size_t end) {
+            std::copy(cloth.positions.begin() + begin, cloth.positions.begin() + end,
+                      work.implicit_step_start_positions.begin() + begin);
+            std::copy(cloth.velocities.begin() + begin, cloth.velocities.begin() + end,
+                      work.implicit_step_start_velocities.begin() + begin);
+        });
+    }
+    clock.lap(work.implicit_times.split_checks);
+    const int iterations_before = work.implicit_last_iterations;
+    take_linearised_step(cloth, field, dt, work);
+    work.implicit_last_iterations += iterations_before;
+    clock.lap(timed_inside);
+    const bool kept = !may_split ||
+                      !some_spring_longer_than(cloth, settings.split_stretch_ratio, work.pool) ||
+                      !(largest_linearisation_error(cloth, work.implicit_step_start_positions,
+                                                    settings.split_stretch_ratio,
+                                                    work.pool) > settings.split_force_error);
+    clock.lap(work.implicit_times.split_checks);
+    if (kept) return depth;
+    ++work.implicit_last_splits;
+    std::copy(work.implicit_step_start_positions.begin(), work.implicit_step_start_positions.end(),
+              cloth.positions.begin());
+    std::copy(work.implicit_step_start_velocities.begin(),
+              work.implicit_step_start_velocities.end(), cloth.velocities.begin());
+    clock.lap(work.implicit_times.split_checks);
+    const int first = step_or_split(cloth, field, 0.5 * dt, work, depth + 1);
+    return std::max(first, step_or_split(cloth, field, 0.5 * dt, work, depth + 1));
+}
+
+}  // namespace
+
+void step_implicit_euler(Cloth& cloth, const ForceField& field, double dt,
+                         IntegratorWorkspace& work) {
+    work.implicit_last_iterations = 0;
+    work.implicit_last_splits = 0;
+    // A step-size controller's memory: a step that had to be split is followed by one that
+    // starts one level coarser than its finest piece, not by a whole step that would most
+    // likely fail again and be thrown away. Each step that needs no split of its own takes
+    // the next one level closer to a whole step.
+    const int start = std::min(work.implicit_start_depth, work.implicit_settings.max_split_depth);
+    const int pieces = 1 << start;
+    int finest = start;
+    for (int piece = 0; piece < pieces; ++piece)
+        finest = std::max(finest, step_or_split(cloth, field, dt / pieces, work, start));
+    work.implicit_start_depth = std::max(0, finest - 1);
+}
+
+namespace {
+
+void take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
+                          IntegratorWorkspace& work) {
+    if (step_implicit_euler_grid(cloth, field, dt, work.implicit_settings, work.implicit_grid,
+                                 work.pool, work.profiling ? &work.implicit_times : nullptr)) {
+        ++work.force_evaluations;
+        work.implicit_last_iterations = work.implicit_grid.last_iterations;
+        work.implicit_last_relative_residual = work.implicit_grid.last_relative_residual;
+        return;
+    }
+    const std::size_t count = cloth.particle_count();
+    work.implicit_springs.resize(cloth.spring_count());  // shrinks with tearing, never grows
+    if (work.implicit_delta_v.size() != count) {
+        for (auto* array : {&work.implicit_delta_v, &work.implicit_rhs, &work.implicit_residual,
+                            &work.implicit_direction, &work.implicit_product})
+            array->assign(count, Vec3(0.0));
+    }
+    evaluate_forces(cloth, field, cloth.positions, cloth.velocities, work);
+
+    // Per-spring terms of h² K + h C, and the right-hand side b = h (f0 - h K v0).
+    std::size_t s = 0;
+    for (const SpringGroup& group : cloth.topology().spring_groups) {
+        for (const Spring& spring : group.springs) {
+            const Vec3 d = cloth.positions[spring.j] - cloth.positions[spring.i];
+            const double length = glm::length(d);
+            ImplicitSpringTerms& terms = work.implicit_springs[s++];
+            if (length <= 0.0) {
+                terms = {Vec3(0.0), 0.0, 0.0};
+                continue;
+            }
+            const double transverse =
+                group.stiffness * std::max(0.0, 1.0 - spring.rest_length / length);
+            terms.direction = d / length;
+            terms.isotropic = dt * dt * transverse;
+            terms.along = dt * dt * (group.stiffness - transverse) + dt * group.damping;
+        }
+    }
+    // b = h f0 - h² K v0: K v0 is the stiffness part of the same per-spring blocks.
+    std::span<Vec3> b = work.implicit_rhs;
+    for (std::size_t p = 0; p < count; ++p) b[p] = dt * work.forces[p];
+    s = 0;
+    for (const SpringGroup& group : cloth.topology().spring_groups) {
+        for (const Spring& spring : group.springs) {
+            const ImplicitSpringTerms& terms = work.implicit_springs[s++];
+            const Vec3 relative = cloth.velocities[spring.i] - cloth.velocities[spring.j];
+            const double stiffness_along =
+                terms.along - dt * group.damping;  // h² k·(u uᵀ) part only
+            const Vec3 block =
+                terms.isotropic * relative +
+                (stiffness_along * glm::dot(terms.direction, relative)) * terms.direction;
+            b[spring.i] -= block;
+            b[spring.j] += block;
+        }
+    }
+    for (std::uint32_t p : cloth.topology().pinned) b[p] = Vec3(0.0);
+    // The hand's particles keep the velocity it prescribes (Δv = 0): filtered like pins, while
+    // b above already holds -h² K v0 of their motion for their neighbours.
+    for (std::uint32_t p : field.held) b[p] = Vec3(0.0);
+
+    // Conjugate gradient from the warm start.
+    std::span<Vec3> x = work.implicit_delta_v, r = work.implicit_residual,
+                    d = work.implicit_direction, q = work.implicit_product;
+    for (std::uint32_t p : cloth.topology().pinned) x[p] = Vec3(0.0);
+    for (std::uint32_t p : field.held) x[p] = Vec3(0.0);
+    multiply_implicit_system(cloth, work, field.air_drag, dt, x, q, field.held);
+    for (std::size_t p = 0; p < count; ++p) r[p] = b[p] - q[p], d[p] = r[p];
+    const double b_norm = std::sqrt(inner(b, b));
+    const double target = implicit_cg_tolerance * b_norm;
+    double r_squared = inner(r, r);
+    int iteration = 0;
+    while (std::sqrt(r_squared) > target && iteration < implicit_cg_max_iterations) {
+        multiply_implicit_system(cloth, work, field.air_drag, dt, d, q, field.held);
+        const double curvature = inner(d, q);
+        if (!(curvature > 0.0)) break;  // not positive definite (or NaN): stop, the guard will see
+        const double alpha = r_squared / curvature;
+        for (std::size_t p = 0; p < count; ++p) x[p] += alpha * d[p], r[p] -= alpha * q[p];
+        const double next_r_squared = inner(r, r);
+        const double beta = next_r_squared / r_squared;
+        r_squared = next_r_squared;
+        for (std::size_t p = 0; p < count; ++p) d[p] = r[p] + beta * d[p];
+        ++iteration;
+    }
+    work.implicit_last_iterations = iteration;
+    work.implicit_last_relative_residual = b_norm > 0.0 ? std::sqrt(r_squared) / b_norm : 0.0;
+
+    for (std::size_t p = 0; p < count; ++p) {
+        cloth.velocities[p] += x[p];
+        cloth.positions[p] += dt * cloth.velocities[p];
+    }
+}
+
+}  // namespace
+
+}  // namespace weft

@@ -1,0 +1,313 @@
+#include "sim/integrators/implicit/implicit_grid_solve.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "sim/core/force_pass.h"
+#include "sim/grid/grid_force_pass.h"
+
+namespace weft {
+namespace {
+
+std::atomic<bool> structured_solve_enabled{true};
+
+// Rows are split between threads only when there are enough particles to pay for the
+// hand-offs (four per iteration).
+constexpr std::size_t min_particles_for_threads = 4096;
+
+// Runs pass(begin, end) over the rows, split between the pool's threads when worth it, in
+// whole pairs of rows: the update pass sums each pair into the first coarse level.
+template <class Pass>
+void over_rows(const ImplicitGridSolver& solver, WorkerPool* pool, Pass&& pass) {
+    const auto count =
+        static_cast<std::size_t>(solver.rows) * static_cast<std::size_t>(solver.cols);
+    if (pool && pool->thread_count() > 1 && count >= min_particles_for_threads)
+        pool->parallel_for(static_cast<std::size_t>((solver.rows + 1) / 2), [&](std::size_t begin,
+                                                                                std::size_t end) {
+            pass(static_cast<int>(2 * begin), std::min(static_cast<int>(2 * end), solver.rows));
+        });
+    else
+        pass(0, solver.rows);
+}
+
+// Σ over rows, in row order: the same sum whatever rows each thread had.
+double sum_rows(const double* per_row, int rows) {
+    double sum = 0.0;
+    for (int row = 0; row < rows; ++row) sum += per_row[row];
+    return sum;
+}
+
+double largest_of_rows(const double* per_row, int rows) {
+    double largest = 0.0;
+    for (int row = 0; row < rows; ++row) largest = std::max(largest, per_row[row]);
+    return largest;
+}
+
+}  // namespace
+
+void set_structured_implicit_solve(bool enabled) {
+    structured_solve_enabled.store(enabled, std::memory_order_relaxed);
+}
+
+bool structured_implicit_solve() {
+    return structured_solve_enabled.load(std::memory_order_relaxed);
+}
+
+void ImplicitGridSolver::prepare(int grid_rows, int grid_cols) {
+    if (grid_rows == rows && grid_cols == cols && !storage.empty()) return;
+    rows = grid_rows;
+    cols = grid_cols;
+    const std::size_t count = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
+    // Two rows and two columns either way, rounded to whole vectors of sixteen floats.
+    pad = (2 * static_cast<std::size_t>(cols) + 2 + 15) / 16 * 16;
+    stride = (count + 2 * pad + 15) / 16 * 16;
+    constexpr int arrays = 4 * implicit_kernel::max_directions + 2 + 6 + 6 + 10 * 3;
+    storage.assign(stride * arrays, 0.0f);
+    row_sums.assign(4 * static_cast<std::size_t>(rows), 0.0);
+    static_forces.assign(count, Vec3(0.0));
+    zero_velocities.assign(count, Vec3(0.0));
+    has_previous_change = false;
+    contacts.held.clear();  // their particles belonged to the old grid
+    job = implicit_kernel::Job{};
+    bind();
+}
+
+ImplicitGridSolver::ImplicitGridSolver(const ImplicitGridSolver& other) {
+    *this = other;  // one list of what a copy takes: the assignment's
+}
+
+ImplicitGridSolver& ImplicitGridSolver::operator=(const ImplicitGridSolver& other) {
+    if (this == &other) return *this;
+    rows = other.rows;
+    cols = other.cols;
+    pad = other.pad;
+    stride = other.stride;
+    storage = other.storage;
+    row_sums = other.row_sums;
+    static_forces = other.static_forces;
+    zero_velocities = other.zero_velocities;
+    job = other.job;
+    multilevel = other.multilevel;
+    contacts = other.contacts;
+    has_previous_change = other.has_previous_change;
+    last_iterations = other.last_iterations;
+    last_relative_residual = other.last_relative_residual;
+    if (!storage.empty()) bind();
+    return *this;
+}
+
+void ImplicitGridSolver::bind() {
+    float* next = storage.data();
+    auto take = [&] {
+        float* array = next;
+        next += stride;
+        return array;
+    };
+    auto take3 = [&] { return implicit_kernel::Field3{take(), take(), take()}; };
+    job.rows = rows;
+    job.cols = cols;
+    job.pad = pad;
+    for (implicit_kernel::DirectionTerms& d : job.directions) {
+        d.iso = take();
+        d.axial_x = take();
+        d.axial_y = take();
+        d.axial_z = take();
+    }
+    job.mass_diagonal = take();
+    job.free = take();
+    for (float*& e : job.diagonal) e = take();
+    for (float*& e : job.inverse_diagonal) e = take();
+    job.rhs = take3();
+    job.start = take3();
+    job.guess_change = take3();
+    job.solution = take3();
+    job.residual = take3();
+    job.preconditioned = take3();
+    job.direction = take3();
+    job.applied = take3();
+    job.product = take3();
+    job.contact_normal = take3();
+}
+
+bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
+                              const ImplicitSolveSettings& settings, ImplicitGridSolver& solver,
+                              WorkerPool* pool, ImplicitPhaseTimes* times) {
+    if (!structured_implicit_solve() || !field.colliders.empty() || !grid_stencil_usable(cloth))
+        return false;
+    if (cloth.topology().grid_stencil.directions.size() > implicit_kernel::max_directions)
+        return false;
+    ImplicitPhaseTimes unused;
+    ImplicitPhaseTimes& phases = times ? *times : unused;
+    PhaseClock clock(times != nullptr);
+    solver.prepare(cloth.rows, cloth.cols);
+    implicit_kernel::Job& job = solver.job;
+    // f(x0, v = 0): gravity, the wind's push and the elastic springs; the dampers are
+    // linear in v and live in the matrix (see implicit_grid_kernel.inl).
+    if (!accumulate_grid_forces(cloth, field, cloth.positions, solver.zero_velocities,
+                                solver.static_forces, pool))
+        return false;
+    job.dt = dt;
+    job.air_drag = field.air_drag;
+    job.direction_count = 0;
+    for (const GridStencilDirection& direction : cloth.topology().grid_stencil.directions) {
+        const SpringGroup& group = cloth.topology().spring_groups[direction.group];
+        implicit_kernel::DirectionTerms& d = job.directions[job.direction_count++];
+        d.row_step = direction.row_step;
+        d.col_step = direction.col_step;
+        d.stiffness = group.stiffness;
+        d.damping = group.damping;
+        d.rest_lengths = direction.rest_lengths.data();
+    }
+    // Directions the cloth no longer has must not leave old terms behind.
+    for (int k = job.direction_count; k < implicit_kernel::max_directions; ++k) {
+        implicit_kernel::DirectionTerms& d = job.directions[k];
+        for (float* array : {d.iso, d.axial_x, d.axial_y, d.axial_z})
+            std::fill(array, array + solver.stride, 0.0f);
+    }
+    job.positions = &cloth.positions.data()->x;
+    job.velocities = &cloth.velocities.data()->x;
+    job.static_forces = &solver.static_forces.data()->x;
+    job.masses = cloth.topology().masses.data();
+    job.inverse_masses = cloth.topology().inverse_masses.data();
+
+    const double warm_start = settings.warm_start && solver.has_previous_change ? 1.0 : 0.0;
+    const auto setup =
+        kernel_of(implicit_kernel::setup_rows_baseline, implicit_kernel::setup_rows_avx2,
+                  implicit_kernel::setup_rows_avx512);
+    over_rows(solver, pool, [&](int begin, int end) { setup(job, begin, end, warm_start); });
+    // Particles in the hand (drag.h): constrained, with their velocities prescribed (Baraff &
+    // Witkin's z). Filtered out like pins, but their velocity stays in the vector the solve
+    // multiplies, so every free neighbour's row sees where the hand takes them.
+    for (const std::uint32_t p : field.held) {
+        const std::size_t i = solver.pad + p;
+        const Vec3& v = cloth.velocities[p];
+        job.free[i] = 0.0f;
+        job.rhs.x[i] = job.rhs.y[i] = job.rhs.z[i] = 0.0f;
+        job.start.x[i] = job.solution.x[i] = static_cast<float>(v.x);
+        job.start.y[i] = job.solution.y[i] = static_cast<float>(v.y);
+        job.start.z[i] = job.solution.z[i] = static_cast<float>(v.z);
+    }
+    // Particles held on the solids' surfaces (implicit_contacts.h), of those the pins and the
+    // hand leave free: before the residual pass, whose preconditioner is filtered for them.
+    if (!field.solids.empty() || !solver.contacts.held.empty())
+        solver.contacts.hold(cloth, field.solids, field.gravity, dt, job);
+
+    const int rows = solver.rows;
+    double* sums = solver.row_sums.data();
+    const implicit_kernel::RowSums row_sums{sums, sums + rows, sums + 2 * rows, sums + 3 * rows};
+    const auto residual =
+        kernel_of(implicit_kernel::residual_rows_baseline, implicit_kernel::residual_rows_avx2,
+                  implicit_kernel::residual_rows_avx512);
+    const auto direction =
+        kernel_of(implicit_kernel::direction_rows_baseline, implicit_kernel::direction_rows_avx2,
+                  implicit_kernel::direction_rows_avx512);
+    const auto update =
+        kernel_of(implicit_kernel::update_rows_baseline, implicit_kernel::update_rows_avx2,
+                  implicit_kernel::update_rows_avx512);
+    const bool multilevel = settings.multilevel;
+    // The local bound (ImplicitSolveSettings): the largest velocity error a particle may
+    // keep, by the block-Jacobi estimate. Not for a fixed tolerance, which studies ask for
+    // alone.
+    const bool bound_locally =
+        settings.fixed_tolerance <= 0.0 && settings.position_tolerance > 0.0 && cloth.spacing > 0.0;
+    const double largest_velocity_error = settings.position_tolerance * cloth.spacing / dt;
+    int iteration = 0;
+    double r_r = 0.0, scale = 0.0;
+
+    // Preconditioned conjugate gradient (block Jacobi plus the coarse levels), in single
+    // precision; the scalars and every sum in double; from the guess in job.solution.
+    auto solve = [&](bool first_round) {
+        ImplicitMultilevel::detach(job);
+        over_rows(solver, pool, [&](int begin, int end) { residual(job, begin, end, row_sums); });
+        clock.lap(phases.setup);
+        double r_z = sum_rows(row_sums.first, rows);
+        r_r = sum_rows(row_sums.second, rows);
+        double largest_z = largest_of_rows(row_sums.largest, rows);
+        if (multilevel) {
+            // The coarse levels need the fine diagonal blocks of the pass just run (the
+            // same in every round); from here on the update passes restrict their residual
+            // into the first level on the way.
+            if (first_round) {
+                solver.multilevel.weight = settings.coarse_weight;
+                solver.multilevel.smoothing = settings.coarse_smoothing;
+                solver.multilevel.build(job, pool);
+                clock.lap(phases.coarse_levels);
+            }
+            r_z += solver.multilevel.apply(job, false, pool);
+            solver.multilevel.attach(job);
+        }
+        scale = std::sqrt(sum_rows(row_sums.third, rows));
+        const double target = settings.tolerance(dt) * scale;
+        for (float* array : {job.direction.x, job.direction.y, job.direction.z, job.product.x,
+                             job.product.y, job.product.z})
+            std::fill(array, array + solver.stride, 0.0f);
+        double beta = 0.0;
+        auto converged = [&] {
+            return std::sqrt(r_r) <= target &&
+                   (!bound_locally || std::sqrt(largest_z) <= largest_velocity_error);
+        };
+        while (!converged() && iteration < settings.max_iterations) {
+            const auto beta_f = static_cast<float>(beta);
+            over_rows(solver, pool,
+                      [&](int begin, int end) { direction(job, begin, end, beta_f, row_sums); });
+            const double curvature = sum_rows(row_sums.first, rows);
+            if (!(curvature > 0.0)) break;  // not positive definite (or NaN): the guard will see
+            const auto alpha_f = static_cast<float>(r_z / curvature);
+            over_rows(solver, pool,
+                      [&](int begin, int end) { update(job, begin, end, alpha_f, row_sums); });
+            double next_r_z = sum_rows(row_sums.first, rows);
+            if (multilevel) next_r_z += solver.multilevel.apply(job, true, pool);
+            r_r = sum_rows(row_sums.second, rows);
+            largest_z = largest_of_rows(row_sums.largest, rows);
+            beta = r_z > 0.0 ? next_r_z / r_z : 0.0;
+            r_z = next_r_z;
+            ++iteration;
+        }
+        clock.lap(phases.iterations);
+    };
+    solve(true);
+    if (job.has_contacts) {
+        // The surfaces' impulses: where one pulled, its particle is let go and the step
+        // solved again from where it stands (implicit_contacts.h); then friction.
+        const auto unfiltered = kernel_of(implicit_kernel::unfiltered_product_rows_baseline,
+                                          implicit_kernel::unfiltered_product_rows_avx2,
+                                          implicit_kernel::unfiltered_product_rows_avx512);
+        over_rows(solver, pool, [&](int begin, int end) { unfiltered(job, begin, end); });
+        if (solver.contacts.let_go_of_pulled(job) > 0) {
+            solve(false);
+            if (job.has_contacts)
+                over_rows(solver, pool, [&](int begin, int end) { unfiltered(job, begin, end); });
+        }
+        solver.contacts.apply_friction(cloth, job);
+    }
+    solver.last_iterations = iteration;
+    solver.last_relative_residual = scale > 0.0 ? std::sqrt(r_r) / scale : 0.0;
+    clock.lap(phases.setup);  // the contacts' impulses and friction, when there are any
+
+    // v1 = the solution, x1 = x0 + h v1; pinned particles stay where they are, held ones go
+    // where the hand takes them.
+    over_rows(solver, pool, [&](int begin, int end) {
+        for (int row = begin; row < end; ++row) {
+            for (int c = 0; c < solver.cols; ++c) {
+                const std::size_t p = static_cast<std::size_t>(row) * solver.cols + c;
+                const std::size_t i = solver.pad + p;
+                const bool is_free = job.free[i] != 0.0f;
+                const Vec3 v1 = is_free
+                                    ? Vec3(job.solution.x[i], job.solution.y[i], job.solution.z[i])
+                                    : Vec3(job.start.x[i], job.start.y[i], job.start.z[i]);
+                cloth.velocities[p] = v1;
+                cloth.positions[p] += dt * v1;
+                job.guess_change.x[i] = job.solution.x[i] - job.start.x[i];
+                job.guess_change.y[i] = job.solution.y[i] - job.start.y[i];
+                job.guess_change.z[i] = job.solution.z[i] - job.start.z[i];
+            }
+        }
+    });
+    clock.lap(phases.setup);
+    solver.has_previous_change = true;
+    return true;
+}
+
+}  // namespace weft

@@ -1,0 +1,114 @@
+// The structured implicit Euler step: the same linearised backward Euler as
+// implicit_euler.cpp (Baraff & Witkin 1998) for a cloth whose springs are a regular grid
+// (grid_stencil.h), solved matrix-free in single precision over per-direction stencils, on
+// every thread of the pool, with a block-Jacobi preconditioner and a warm start.
+//
+// The general path (implicit_euler.cpp) stays the reference: it solves the same system in
+// double for any topology, and a test shows the two agree to the solve's tolerance.
+//
+// The particles in the user's hand enter the system as constraints with prescribed
+// velocities (drag.h), so the rest of the sheet answers the hand within the step at any dt.
+// Results are the same bit for bit for any number of threads and every kernel build.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+#include "parallel/worker_pool.h"
+#include "sim/core/cloth.h"
+#include "sim/core/step_profile.h"
+#include "sim/integrators/implicit/implicit_contacts.h"
+#include "sim/integrators/implicit/implicit_grid_kernel.h"
+#include "sim/integrators/implicit/implicit_multilevel.h"
+
+namespace weft {
+
+struct ForceField;
+
+// When the conjugate-gradient loop stops. The residual is measured against the right-hand
+// side of the Δv form, |h (f0 + h K v0)| (the residual at v1 = v0): the part of the step the
+// solve is there to find.
+//
+// The error a stopped solve leaves in v1 is about the relative residual times the step's
+// own change, every step, so over a fixed time it does not shrink with h, while implicit
+// Euler's own error does (first order). A tolerance proportional to h keeps the solve's
+// share of the error about fixed at every h. At 1.2/s × h, 0.02 at a 60 Hz step, the solve's
+// error measured 8 % of the method's own on cloth_128.toml after 0.5 s (2.8 mm against
+// 35 mm RMS; 7 % at 0.01 for 19 % more iterations, 17 % at 0.04; docs/accuracy.md).
+//
+// A norm over the whole sheet can hide a spike: at the snap that ends cloth_128's fall, the
+// solve stopped at 0.02 left a few springs 60 % over their rest length where the converged
+// solve has 5.5 % (256²: 275 % against 11.5 %). So the default rule also bounds each
+// particle's share, estimated by the block-Jacobi part of the preconditioner (which sees a
+// local spike well; the smooth error is the global norm's): h |D⁻¹ r_p| at most
+// position_tolerance spacings. At 0.005 that took the snap to 10.5 % (13 % at 256²) for
+// 18.4 iterations a step instead of 17.2 (29.6 instead of 27.8).
+struct ImplicitSolveSettings {
+    double tolerance_rate = 1.2;        // 1/s: stop at relative residual tolerance_rate × h ...
+    double least_tolerance = 1e-6;      // ... but never ask for less (single precision's reach)
+    double position_tolerance = 0.005;  // spacings: largest h |D⁻¹ r_p| left (0: no bound)
+    double fixed_tolerance = 0.0;       // > 0: stop at this relative residual alone (studies)
+    int max_iterations = 300;
+    bool warm_start = true;  // start from v0 + the previous step's Δv instead of v0
+    bool multilevel = true;  // add the coarse levels to the block-Jacobi preconditioner
+    double coarse_weight = 1.0;
+    double coarse_smoothing = 0.8;  // ω of the first coarse level's V-cycle (0: additive)
+    // A step that leaves some spring beyond split_stretch_ratio rest lengths and some
+    // spring's force further than split_force_error × k L from what the linearised step
+    // assumed is taken again as two halves, at most max_split_depth times over
+    // (implicit_euler.cpp; a ratio of 0: never).
+    double split_stretch_ratio = 1.3;
+    double split_force_error = 0.1;
+    int max_split_depth = 3;
+
+    double tolerance(double dt) const {
+        return fixed_tolerance > 0.0 ? fixed_tolerance
+                                     : std::max(least_tolerance, tolerance_rate * dt);
+    }
+};
+
+// Scratch and history of the structured solve: sized on first use for a cloth (rows x
+// cols), so no step allocates after the first.
+struct ImplicitGridSolver {
+    int rows = 0, cols = 0;
+    std::size_t pad = 0;     // floats of zeros before and after every array
+    std::size_t stride = 0;  // floats per array
+    std::vector<float> storage;
+    std::vector<double> row_sums;     // 3 per row
+    std::vector<Vec3> static_forces;  // N, f(x0, v = 0)
+    std::vector<Vec3> zero_velocities;
+    implicit_kernel::Job job;
+    ImplicitMultilevel multilevel;
+    ImplicitContacts contacts;
+    bool has_previous_change = false;  // guess_change holds a previous step's Δv
+    // How the last solve went.
+    int last_iterations = 0;
+    double last_relative_residual = 0.0;
+
+    ImplicitGridSolver() = default;
+    // Copies (snapshots, runs side by side) keep the history, so a copy steps exactly as
+    // the original would; the job's pointers are re-aimed at the copy's own storage.
+    ImplicitGridSolver(const ImplicitGridSolver& other);
+    ImplicitGridSolver& operator=(const ImplicitGridSolver& other);
+
+    void prepare(int grid_rows, int grid_cols);  // sizes everything; keeps history if same
+
+  private:
+    void bind();  // points the job's arrays into storage
+};
+
+// One implicit Euler step of the structured solve, or false, touching nothing, when it
+// cannot take it: no usable grid stencil, or repulsion contacts (forces the general path
+// takes explicitly). Particles about to meet the field's impulse solids are held on their
+// surfaces inside the solve (implicit_contacts.h). `times`, when given, gains the step's
+// phases.
+bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
+                              const ImplicitSolveSettings& settings, ImplicitGridSolver& solver,
+                              WorkerPool* pool, ImplicitPhaseTimes* times = nullptr);
+
+// Turns the structured solve off (tests and studies compare it with the general path).
+void set_structured_implicit_solve(bool enabled);
+bool structured_implicit_solve();
+
+}  // namespace weft

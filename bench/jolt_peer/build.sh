@@ -1,0 +1,9 @@
+#!/bin/sh
+# Configure + build Jolt (static, Release, AVX2, no AVX-512) and jolt_cloth. -j1: the machine is shared.
+set -e
+cd "$(dirname "$0")"
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=g++ \
+  -DTARGET_UNIT_TESTS=OFF -DTARGET_SAMPLES=OFF -DTARGET_VIEWER=OFF -DTARGET_HELLO_WORLD=OFF -DTARGET_PERFORMANCE_TEST=OFF \
+  -DUSE_AVX512=OFF -DUSE_AVX2=ON -DUSE_AVX=ON -DUSE_FMADD=ON -DUSE_F16C=ON -DUSE_LZCNT=ON -DUSE_TZCNT=ON \
+  -DJPH_BUILD_SHARED_LIBS=OFF -DBUILD_SHARED_LIBS=OFF -DJPH_USE_VK=OFF -DJPH_USE_CPU_COMPUTE=OFF -DENABLE_INSTALL=OFF
+nice -n 5 cmake --build build -j1 ${1:+--target $1}

@@ -102,6 +102,10 @@ struct SceneKeyInfo {
     void (*set)(Scene& scene, const SceneValue& value, std::uint32_t c);
     // choice: the value of the spelling at `index` in `choices`.
     SceneValue (*choice_value)(int index);
+
+    // The table the key sits in ("springs.shear", "colliders") and its name there.
+    std::string_view section() const { return name.substr(0, name.rfind('.')); }
+    std::string_view leaf() const { return name.substr(name.rfind('.') + 1); }
 };
 
 // Every key, in SceneKey's order.

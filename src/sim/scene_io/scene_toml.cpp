@@ -54,10 +54,8 @@ namespace {
 std::vector<std::string_view> section_keys(std::string_view section,
                                            std::initializer_list<std::string_view> extra = {}) {
     std::vector<std::string_view> keys;
-    for (const SceneKeyInfo& info : scene_key_table()) {
-        const auto dot = info.name.rfind('.');
-        if (info.name.substr(0, dot) == section) keys.push_back(info.name.substr(dot + 1));
-    }
+    for (const SceneKeyInfo& info : scene_key_table())
+        if (info.section() == section) keys.push_back(info.leaf());
     keys.insert(keys.end(), extra.begin(), extra.end());
     return keys;
 }
@@ -80,9 +78,8 @@ void read_plain_keys(TomlReader& reader, const toml::table& table, std::string_v
                      Scene& scene, std::uint32_t collider = 0) {
     const std::string path(section);
     for (const SceneKeyInfo& info : scene_key_table()) {
-        const auto dot = info.name.rfind('.');
-        if (info.name.substr(0, dot) != section) continue;
-        const std::string_view leaf = info.name.substr(dot + 1);
+        if (info.section() != section) continue;
+        const std::string_view leaf = info.leaf();
         const SceneValue current = info.get(scene, collider);
         switch (info.kind) {
             case ValueKind::number: {
@@ -208,9 +205,8 @@ void read_springs(TomlReader& reader, const toml::table& root, Scene& scene) {
 void read_optional_feature(TomlReader& reader, const toml::table& root, SceneKey key,
                            Scene& scene) {
     const SceneKeyInfo& info = scene_key_info(key);
-    const auto dot = info.name.find('.');
-    const std::string path(info.name.substr(0, dot));
-    const std::string_view leaf = info.name.substr(dot + 1);
+    const std::string path(info.section());
+    const std::string_view leaf = info.leaf();
     const toml::table* table = reader.sub_table(root, "", path);
     if (!table) return;
     reader.check_keys(*table, path, {leaf});

@@ -10,21 +10,13 @@
 namespace weft {
 namespace {
 
-std::string vec3(const Vec3d& v) {
-    std::string text = "[";
-    for (int k = 0; k < 3; ++k) text.append(k ? ", " : "").append(toml_number(v[k]));
-    return text.append("]");
-}
-
 // Writes the keys the key table lists under `section` as `leaf = value  # unit`, in the
 // table's order, except the keys `skip` names.
 void write_keys(std::ostringstream& out, const Scene& scene, std::string_view section,
                 std::uint32_t collider = 0, std::initializer_list<std::string_view> skip = {}) {
     for (const SceneKeyInfo& info : scene_key_table()) {
-        const auto dot = info.name.rfind('.');
-        const std::string_view leaf = info.name.substr(dot + 1);
-        if (info.name.substr(0, dot) != section ||
-            std::find(skip.begin(), skip.end(), leaf) != skip.end())
+        const std::string_view leaf = info.leaf();
+        if (info.section() != section || std::find(skip.begin(), skip.end(), leaf) != skip.end())
             continue;
         out << leaf << " = " << scene_value_toml(info.get(scene, collider));
         if (!info.unit.empty()) out << "  # " << info.unit;
@@ -54,7 +46,7 @@ void mesh_cloth(std::ostringstream& out, const ClothSpec& cloth) {
         out << "particle_mass = " << toml_number(cloth.particle_mass) << "  # kg, every vertex\n";
     else
         out << "density = " << toml_number(cloth.density) << "  # kg/m²\n";
-    out << "origin = " << vec3(cloth.origin) << "  # m\n";
+    out << "origin = " << scene_value_toml(cloth.origin) << "  # m\n";
     if (cloth.pin_preset == PinPreset::group) {
         out << "pin_group = " << toml_string(cloth.pin_group) << "\n";
     } else if (cloth.pin_preset == PinPreset::vertices) {

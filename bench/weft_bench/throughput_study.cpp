@@ -154,7 +154,7 @@ int run_throughput_study(const ThroughputOptions& options) {
     series.push_back({"plain baseline (symplectic euler)", raster::Rgba8{0, 0, 0, 255}, {}, true});
 
     std::printf("threads: %d (WEFT_THREADS or the machine's), force kernel: %s\n",
-                default_thread_count(), simd_level_name(simd_level()));
+                default_thread_count(), simd_level_name(supported_simd_level()));
     int largest_real_time_at_1ms = 0, largest_real_time_sound = 0;
     for (int n : options.sizes) {
         if (stop_requested) break;
@@ -227,20 +227,16 @@ int run_throughput_study(const ThroughputOptions& options) {
         // and the step run separately (no fusion), and the AVX2 build of the kernel where
         // the CPU would take AVX-512.
         Simulation weft_separate = weft_run, weft_avx2 = weft_run;
-        const SimdLevel best_level = simd_level();
+        const SimdLevel best_level = supported_simd_level();
+        SimulationOptions separate = weft_run.options(), avx2 = weft_run.options();
+        separate.fused_grid_steps = false;
+        avx2.kernel_build = std::min(best_level, SimdLevel::avx2);
+        weft_separate.set_options(separate);
+        weft_avx2.set_options(avx2);
         const Interleaved versus =
             interleaved_seconds({[&] { weft_run.step(); }, [&] { weft_single.step(); },
                                  [&] { plain.step_symplectic_euler(sound_dt); },
-                                 [&] {
-                                     set_fused_grid_steps(false);
-                                     weft_separate.step();
-                                     set_fused_grid_steps(true);
-                                 },
-                                 [&] {
-                                     set_simd_level(std::min(best_level, SimdLevel::avx2));
-                                     weft_avx2.step();
-                                     set_simd_level(best_level);
-                                 }});
+                                 [&] { weft_separate.step(); }, [&] { weft_avx2.step(); }});
         const double weft_seconds = versus.seconds[0], weft_single_seconds = versus.seconds[1];
         const double plain_seconds = versus.seconds[2];
         const double speed_up = versus.ratio_to_first[2];

@@ -96,8 +96,9 @@ TEST(Determinism, OneTwoAndFourThreadsGiveTheSameStateBitForBit) {
 // The large tearing sheet (structured force pass), or its offset-layout twin (general pass),
 // run for 400 steps with `threads` threads; 0 if it diverged.
 std::uint64_t large_sheet_hash(int threads, Layout layout = Layout::grid,
-                               Integrator integrator = Integrator::symplectic_euler) {
-    Simulation simulation(large_tearing_sheet(layout, integrator));
+                               Integrator integrator = Integrator::symplectic_euler,
+                               const SimulationOptions& options = {}) {
+    Simulation simulation(large_tearing_sheet(layout, integrator), options);
     simulation.set_thread_count(threads);
     for (int s = 0; s < 400; ++s)
         if (simulation.step().diverged()) return 0;
@@ -147,11 +148,10 @@ TEST(Determinism, TheDrapesContactsOnTheFusedStepsRowsGiveTheSeparatePassesBits)
     // rows it has just stepped (simulation.cpp, OnSteppedRows); without it, the step, the
     // contacts and self-collision's measure are three passes. Same state, same contacts.
     auto run = [](bool fused) {
-        const testing::FusedGridSteps steps(fused);
         SceneLoadResult loaded =
             load_scene_file(WEFT_SOURCE_DIR "/assets/scenes/drape_self_collision_64.toml");
         EXPECT_TRUE(loaded.ok());
-        Simulation simulation(*loaded.scene);
+        Simulation simulation(*loaded.scene, testing::fused_grid_steps(fused));
         simulation.set_thread_count(2);
         std::size_t contacts = 0;
         for (int s = 0; s < 1200; ++s) {
@@ -168,7 +168,9 @@ TEST(Determinism, TheDrapesContactsOnTheFusedStepsRowsGiveTheSeparatePassesBits)
 }
 
 TEST(Determinism, EveryKernelBuildGivesTheSameStateBitForBit) {
-    testing::expect_same_bits_on_every_kernel_build([] { return large_sheet_hash(2); });
+    testing::expect_same_bits_on_every_kernel_build([](const SimulationOptions& options) {
+        return large_sheet_hash(2, Layout::grid, Integrator::symplectic_euler, options);
+    });
 }
 
 TEST(Determinism, TheHashSeesEveryBit) {

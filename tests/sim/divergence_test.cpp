@@ -33,10 +33,14 @@ TEST(DivergenceGuard, AOneColumnSheetWithBendSpringsIsJudgedLikeAnyOther) {
     scene.bend.enabled = true;
     Simulation simulation(scene);
     ASSERT_FALSE(simulation.step().diverged());
-    EXPECT_EQ(grid_springs_maybe_longer_than(simulation.cloth(), 2.0, nullptr), false);
+    EXPECT_EQ(
+        grid_springs_maybe_longer_than(simulation.cloth(), 2.0, nullptr, supported_simd_level()),
+        false);
     Cloth& chain = simulation.edit_cloth();
     for (std::size_t p = 0; p < chain.particle_count(); ++p) chain.positions[p].y *= 7.0;
-    EXPECT_EQ(grid_springs_maybe_longer_than(simulation.cloth(), 2.0, nullptr), true);
+    EXPECT_EQ(
+        grid_springs_maybe_longer_than(simulation.cloth(), 2.0, nullptr, supported_simd_level()),
+        true);
     EXPECT_TRUE(find_divergence(simulation.cloth(), true, nullptr).has_value());
 }
 
@@ -130,7 +134,7 @@ TEST(DivergenceGuard, ARunawayStretchMadeByAContactIsCaughtInTheStepThatMadeIt) 
     ball.radius = 10.0 * scene.cloth.spacing;
     scene.colliders = {ball};
     Simulation simulation(scene);
-    ASSERT_TRUE(fused_grid_steps());
+    ASSERT_TRUE(simulation.options().fused_grid_steps);
     ASSERT_TRUE(testing::run_steps(simulation, 50));
 
     Scene moved = simulation.scene();

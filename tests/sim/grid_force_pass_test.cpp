@@ -35,10 +35,10 @@ void scramble(Cloth& cloth, unsigned seed) {
     testing::scramble(cloth, seed, 0.008);
 }
 
-std::vector<Vec3> forces_of(const Cloth& cloth, const ForceField& field,
-                            WorkerPool* pool = nullptr) {
+std::vector<Vec3> forces_of(const Cloth& cloth, const ForceField& field, WorkerPool* pool = nullptr,
+                            SimdLevel level = supported_simd_level()) {
     std::vector<Vec3> forces(cloth.particle_count());
-    accumulate_forces(cloth, field, cloth.positions, cloth.velocities, forces, pool);
+    accumulate_forces(cloth, field, cloth.positions, cloth.velocities, forces, pool, level);
     return forces;
 }
 
@@ -150,25 +150,22 @@ TEST(GridForcePass, EveryKernelBuildGivesTheSameBits) {
     Cloth cloth = build_grid_cloth(grid_scene(33, 29));
     scramble(cloth, 13);
     std::vector<Vec3> baseline;
-    {
-        const testing::KernelBuild build(SimdLevel::baseline);
-        baseline = forces_of(cloth, windy_field());
-    }
+    baseline = forces_of(cloth, windy_field(), nullptr, SimdLevel::baseline);
     for (SimdLevel level : {SimdLevel::avx2, SimdLevel::avx512}) {
         if (level > supported_simd_level()) continue;
-        const testing::KernelBuild build(level);
-        EXPECT_TRUE(same_bits(forces_of(cloth, windy_field()), baseline)) << simd_level_name(level);
+        EXPECT_TRUE(same_bits(forces_of(cloth, windy_field(), nullptr, level), baseline))
+            << simd_level_name(level);
     }
 }
 
 TEST(GridForcePass, OverstretchTestFlagsOnlyLiveSpringsPastTheRatio) {
     Cloth cloth = build_grid_cloth(grid_scene(6, 6));
-    EXPECT_FALSE(*grid_springs_maybe_longer_than(cloth, 5.0, nullptr));
+    EXPECT_FALSE(*grid_springs_maybe_longer_than(cloth, 5.0, nullptr, supported_simd_level()));
     cloth.positions[35] += Vec3(0.0, 0.0, 0.2);  // 6.7 spacings away from its neighbours
-    EXPECT_TRUE(*grid_springs_maybe_longer_than(cloth, 5.0, nullptr));
+    EXPECT_TRUE(*grid_springs_maybe_longer_than(cloth, 5.0, nullptr, supported_simd_level()));
     // With every spring of that corner gone, nothing is left to overstretch.
     remove_springs_if(cloth, [](const Spring& s) { return s.j == 35 || s.i == 35; });
-    EXPECT_FALSE(*grid_springs_maybe_longer_than(cloth, 5.0, nullptr));
+    EXPECT_FALSE(*grid_springs_maybe_longer_than(cloth, 5.0, nullptr, supported_simd_level()));
 }
 
 // The guard's one pass after a far move gives the next reference's headroom: the same
@@ -193,19 +190,19 @@ TEST(GridForcePass, StretchHeadroomIsTheSpringBySpringMinimum) {
         }
     for (SimdLevel level : {SimdLevel::baseline, SimdLevel::avx2, SimdLevel::avx512}) {
         if (level > supported_simd_level()) continue;
-        const testing::KernelBuild build(level);
         for (int threads : {1, 2, 3}) {
             WorkerPool pool(threads);
-            const auto grid = grid_stretch_headroom(cloth, ratio, &pool);
+            const auto grid = grid_stretch_headroom(cloth, ratio, &pool, level);
             ASSERT_TRUE(grid.has_value());
             EXPECT_EQ(grid->headroom, headroom) << threads << simd_level_name(level);
             EXPECT_EQ(grid->scale, scale) << threads << simd_level_name(level);
-            EXPECT_EQ(grid->maybe_longer, *grid_springs_maybe_longer_than(cloth, ratio, &pool));
+            EXPECT_EQ(grid->maybe_longer,
+                      *grid_springs_maybe_longer_than(cloth, ratio, &pool, level));
         }
     }
     // Past the ratio: flagged, and the headroom negative.
     cloth.positions[35] += Vec3(0.0, 0.0, 2.0);
-    const auto far = grid_stretch_headroom(cloth, ratio, nullptr);
+    const auto far = grid_stretch_headroom(cloth, ratio, nullptr, supported_simd_level());
     EXPECT_TRUE(far->maybe_longer);
     EXPECT_LT(far->headroom, 0.0);
 }

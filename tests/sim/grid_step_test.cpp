@@ -49,8 +49,8 @@ constexpr double step_dt = 2e-4;  // s
 
 // The separate path: the force pass, then step_symplectic_euler's own loop.
 Cloth separately_stepped(Cloth cloth, const ForceField& field) {
-    const testing::FusedGridSteps separate(false);
     IntegratorWorkspace work;
+    work.options.fused_grid_steps = false;
     work.resize(cloth.particle_count(), Integrator::symplectic_euler);
     step_symplectic_euler(cloth, field, step_dt, work);
     return cloth;
@@ -60,7 +60,7 @@ Cloth fused_stepped(Cloth cloth, const ForceField& field, WorkerPool* pool,
                     const SweepRequest* sweep = nullptr, ParticleSweep* found = nullptr) {
     std::vector<Vec3> next_positions, next_velocities;
     EXPECT_TRUE(step_grid_symplectic_euler(cloth, field, step_dt, next_positions, next_velocities,
-                                           sweep, found, pool));
+                                           sweep, found, pool, supported_simd_level()));
     return cloth;
 }
 
@@ -106,7 +106,8 @@ TEST(FusedGridStep, ItsSweepFindsWhatTheSeparateSweepFinds) {
         ParticleSweep found;
         fused_stepped(start, windy_field(), &pool, &request, &found);
         const ParticleSweep expected =
-            sweep_particles(moved.positions, start.positions, moved.velocities, limit, nullptr);
+            sweep_particles(moved.positions, start.positions, moved.velocities, limit, nullptr,
+                            supported_simd_level());
         EXPECT_EQ(found.moved, expected.moved) << limit;
         EXPECT_EQ(found.non_finite, expected.non_finite) << limit;
         EXPECT_EQ(found.moved, limit == median) << limit;
@@ -127,7 +128,6 @@ TEST(FusedGridStep, ItsSweepFlagsEveryParticleThatMovedTheLimitAndNoneUnderAThir
     const double limit = 0.01;  // m
     for (SimdLevel level : {SimdLevel::baseline, SimdLevel::avx2, SimdLevel::avx512}) {
         if (level > supported_simd_level()) continue;
-        const testing::KernelBuild build(level);
         int cases = 0;
         for (int i = 0; i < 400; ++i) {
             // Directions spread over the sphere, diagonals included (the hardest case: each
@@ -144,7 +144,7 @@ TEST(FusedGridStep, ItsSweepFlagsEveryParticleThatMovedTheLimitAndNoneUnderAThir
             positions[i % 5] += length * direction;
             const std::vector<Vec3> velocities(5, Vec3(0.1, -0.2, 0.3));
             const ParticleSweep found =
-                sweep_particles(positions, reference, velocities, limit * limit, nullptr);
+                sweep_particles(positions, reference, velocities, limit * limit, nullptr, level);
             const Vec3 d = positions[i % 5] - reference[i % 5];
             const double moved_squared = glm::dot(d, d);
             if (moved_squared >= limit * limit) {
@@ -172,7 +172,7 @@ TEST(FusedGridStep, DeclinesWhenTheFieldHasForcesThePassDoesNotCompute) {
     ForceField field = windy_field();
     field.colliders = {&sphere, 1};
     EXPECT_FALSE(step_grid_symplectic_euler(cloth, field, step_dt, next_positions, next_velocities,
-                                            nullptr, nullptr, nullptr));
+                                            nullptr, nullptr, nullptr, supported_simd_level()));
     EXPECT_TRUE(same_bits(cloth.positions, start.positions));
     EXPECT_TRUE(same_bits(cloth.velocities, start.velocities));
 }
@@ -184,8 +184,7 @@ std::pair<std::uint64_t, std::string> run(const char* scene_file,
                                           std::vector<std::string> overrides, bool fused) {
     SceneLoadResult loaded = load_scene_file(scene_file, overrides);
     EXPECT_TRUE(loaded.ok()) << loaded.error->message();
-    const testing::FusedGridSteps steps(fused);
-    Simulation simulation(*loaded.scene);
+    Simulation simulation(*loaded.scene, testing::fused_grid_steps(fused));
     std::string verdict;
     for (int s = 0; s < 1500 && verdict.empty(); ++s) {
         const StepReport report = simulation.step();

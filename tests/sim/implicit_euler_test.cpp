@@ -23,10 +23,10 @@ TEST(ImplicitEuler, OscillationEnergyDecaysByExactlyOnePlusHOmegaSquaredPerStep)
     // Backward Euler on a linear oscillator: (v² + ω² z²) shrinks by 1 / (1 + h²ω²) each
     // step. The hanging spring is linear, so the once-linearised step is exact here. The
     // general path solves in double to 1e-8; the structured one in single precision.
-    const testing::GeneralImplicitPath general_path;
     const testing::HangingSpring spring;
     const double dt = 1e-3;
-    Simulation simulation(spring.scene(Integrator::implicit_euler, dt));
+    Simulation simulation(spring.scene(Integrator::implicit_euler, dt),
+                          testing::general_implicit_path());
     // The spring swings past 1.3 rest lengths: the step must not be split (implicit_euler.cpp)
     // for the map to be the one step's.
     ImplicitSolveSettings unsplit;
@@ -75,9 +75,10 @@ std::vector<double> jacobian(const Cloth& cloth, const ForceField& field, bool b
 // Relative residual of the step just taken against (M - h Jv - h² Jx) Δv = h (f0 + h Jx v0),
 // with the Jacobians from central differences of the force pass, over the free particles.
 double baraff_witkin_residual(const Scene& scene, double speed_scale,
-                              double stated_tolerance = implicit_cg_tolerance) {
+                              double stated_tolerance = implicit_cg_tolerance,
+                              const SimulationOptions& options = {}) {
     const double dt = scene.solver.dt;
-    Simulation simulation(scene);
+    Simulation simulation(scene, options);
     ImplicitSolveSettings settings;
     settings.fixed_tolerance = stated_tolerance;
     simulation.set_implicit_solve_settings(settings);
@@ -136,9 +137,13 @@ TEST(ImplicitEuler, ItsSolveSatisfiesTheBaraffWitkinSystemToTheStatedTolerance) 
     // do), so the finite-difference truth is exact only where that term vanishes: moving
     // particles with undamped springs (drag only), and damped springs at rest. The solver's
     // tolerance is 1e-8; finite differences add about 1e-8.
-    const testing::GeneralImplicitPath general_path;
-    EXPECT_LT(baraff_witkin_residual(small_sheet_for_the_solve(0.0), 0.5), 1e-6);
-    EXPECT_LT(baraff_witkin_residual(small_sheet_for_the_solve(0.5), 0.0), 1e-6);
+    const SimulationOptions general = testing::general_implicit_path();
+    EXPECT_LT(
+        baraff_witkin_residual(small_sheet_for_the_solve(0.0), 0.5, implicit_cg_tolerance, general),
+        1e-6);
+    EXPECT_LT(
+        baraff_witkin_residual(small_sheet_for_the_solve(0.5), 0.0, implicit_cg_tolerance, general),
+        1e-6);
 }
 
 TEST(ImplicitEuler, TheStructuredSolveSatisfiesTheBaraffWitkinSystemToItsTolerance) {

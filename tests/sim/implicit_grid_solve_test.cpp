@@ -60,10 +60,8 @@ TEST(ImplicitGridSolve, AgreesWithTheGeneralPathToItsTolerance) {
     set_tolerance(general, 1e-10);
     const std::vector<Vec3> before = structured.cloth().velocities;
     ASSERT_FALSE(structured.step().diverged());
-    {
-        const testing::GeneralImplicitPath general_path;
-        ASSERT_FALSE(general.step().diverged());
-    }
+    general.set_options(testing::general_implicit_path());
+    ASSERT_FALSE(general.step().diverged());
     double largest_change = 0.0, largest_difference = 0.0;
     for (std::size_t p = 0; p < before.size(); ++p) {
         largest_change =
@@ -76,11 +74,11 @@ TEST(ImplicitGridSolve, AgreesWithTheGeneralPathToItsTolerance) {
     EXPECT_LT(largest_difference, 1e-4 * largest_change);
 }
 
-std::uint64_t implicit_sheet_hash(int threads) {
+std::uint64_t implicit_sheet_hash(int threads, const SimulationOptions& options = {}) {
     // 72² (past the threshold for splitting rows) with tearing, wind and a drag on it.
     Scene scene = cloth_material_sheet(72, 1.0 / 120.0);
     scene.tear_max_stretch = 1.05;
-    Simulation simulation(scene);
+    Simulation simulation(scene, options);
     simulation.set_thread_count(threads);
     for (int s = 0; s < 40; ++s) {
         if (s == 10) {
@@ -98,11 +96,39 @@ std::uint64_t implicit_sheet_hash(int threads) {
 }
 
 TEST(ImplicitGridSolve, OneTwoAndThreeThreadsGiveTheSameBits) {
-    testing::expect_same_bits_on_any_thread_count(implicit_sheet_hash);
+    testing::expect_same_bits_on_any_thread_count([](int t) { return implicit_sheet_hash(t); });
 }
 
 TEST(ImplicitGridSolve, EveryKernelBuildGivesTheSameBits) {
-    testing::expect_same_bits_on_every_kernel_build([] { return implicit_sheet_hash(2); });
+    testing::expect_same_bits_on_every_kernel_build(
+        [](const SimulationOptions& options) { return implicit_sheet_hash(2, options); });
+}
+
+// The solve's path is an option of each Simulation, not of the process: a run on the general
+// path stepped in turn with one on the structured path gets the bits it gets alone, and the
+// two differ (single against double precision), so the option does reach the step.
+TEST(ImplicitGridSolve, EachSimulationKeepsItsOwnPath) {
+    const Scene scene = cloth_material_sheet(24, 1.0 / 60.0);
+    auto alone = [&](const SimulationOptions& options) {
+        Simulation simulation(scene, options);
+        EXPECT_TRUE(testing::run_steps(simulation, 20));
+        return hash_state(simulation.cloth());
+    };
+    Simulation structured(scene), general(scene, testing::general_implicit_path());
+    for (int s = 0; s < 20; ++s) {
+        ASSERT_FALSE(structured.step().diverged());
+        ASSERT_FALSE(general.step().diverged());
+    }
+    EXPECT_EQ(hash_state(structured.cloth()), alone({}));
+    EXPECT_EQ(hash_state(general.cloth()), alone(testing::general_implicit_path()));
+    EXPECT_NE(hash_state(structured.cloth()), hash_state(general.cloth()));
+    // A copy keeps the options; a kernel build past the CPU's is its best.
+    const Simulation copy = general;
+    EXPECT_FALSE(copy.options().structured_implicit_solve);
+    SimulationOptions beyond;
+    beyond.kernel_build = SimdLevel::avx512;
+    structured.set_options(beyond);
+    EXPECT_EQ(structured.options().kernel_build, supported_simd_level());
 }
 
 TEST(ImplicitGridSolve, TheFirstCoarseLevelsVCycleFindsTheSameStepsInFewerIterations) {

@@ -25,8 +25,7 @@ TEST_P(HangingSpringMatchesClosedForm, OverThreeUndampedPeriods) {
     const OscillatorCase c = GetParam();
     // The closed form to the test's tolerance needs implicit Euler's double-precision path
     // (at dt = 1 µs the structured solve's single precision is coarser than the method).
-    const testing::GeneralImplicitPath general_path;
-    Simulation simulation(spring.scene(c.integrator, c.dt));
+    Simulation simulation(spring.scene(c.integrator, c.dt), testing::general_implicit_path());
     const double amplitude = spring.mass * spring.gravity / spring.stiffness;  // m
     const long long steps = std::llround(1.0 / c.dt);  // T = 1 s, about 3.2 periods
     double worst = 0.0;
@@ -50,8 +49,7 @@ TEST_P(HangingSpringMatchesClosedForm, WithSpringDampingAndDrag) {
     const OscillatorCase c = GetParam();
     // The closed form to the test's tolerance needs implicit Euler's double-precision path
     // (at dt = 1 µs the structured solve's single precision is coarser than the method).
-    const testing::GeneralImplicitPath general_path;
-    Simulation simulation(spring.scene(c.integrator, c.dt));
+    Simulation simulation(spring.scene(c.integrator, c.dt), testing::general_implicit_path());
     const double amplitude = spring.mass * spring.gravity / spring.stiffness;
     const long long steps = std::llround(1.0 / c.dt);
     double worst = 0.0;

@@ -20,21 +20,16 @@ void expect_same_bits_on_any_thread_count(HashOf hash_of) {
     EXPECT_EQ(hash_of(3), one);
 }
 
-// hash_of() under every kernel build this CPU runs: the baseline's. Skips the test on a CPU
-// without AVX2 (nothing to compare).
+// hash_of(options) under every kernel build this CPU runs (SimulationOptions::kernel_build):
+// the baseline's. Skips the test on a CPU without AVX2 (nothing to compare).
 template <class HashOf>
 void expect_same_bits_on_every_kernel_build(HashOf hash_of) {
     if (supported_simd_level() == SimdLevel::baseline) GTEST_SKIP() << "no AVX2 on this CPU";
-    std::uint64_t baseline = 0;
-    {
-        const KernelBuild build(SimdLevel::baseline);
-        baseline = hash_of();
-    }
+    const std::uint64_t baseline = hash_of(kernel_build(SimdLevel::baseline));
     ASSERT_NE(baseline, 0u);
     for (SimdLevel level : {SimdLevel::avx2, SimdLevel::avx512}) {
         if (level > supported_simd_level()) continue;
-        const KernelBuild build(level);
-        EXPECT_EQ(hash_of(), baseline) << simd_level_name(level);
+        EXPECT_EQ(hash_of(kernel_build(level)), baseline) << simd_level_name(level);
     }
 }
 

@@ -17,41 +17,28 @@ inline constexpr Integrator all_integrators[] = {Integrator::explicit_euler,
                                                  Integrator::symplectic_euler, Integrator::verlet,
                                                  Integrator::velocity_verlet, Integrator::rk4};
 
-// While alive, implicit Euler takes its general path (double precision, any topology)
-// instead of the structured single-precision solve on grids: for the tests of the method's
-// exact discrete behaviour, which the general path is the reference for.
-struct GeneralImplicitPath {
-    GeneralImplicitPath() { set_structured_implicit_solve(false); }
-    ~GeneralImplicitPath() { set_structured_implicit_solve(true); }
-    GeneralImplicitPath(const GeneralImplicitPath&) = delete;
-    GeneralImplicitPath& operator=(const GeneralImplicitPath&) = delete;
-};
+// Options under which implicit Euler takes its general path (double precision, any
+// topology) instead of the structured single-precision solve on grids: for the tests of the
+// method's exact discrete behaviour, which the general path is the reference for.
+inline SimulationOptions general_implicit_path() {
+    SimulationOptions options;
+    options.structured_implicit_solve = false;
+    return options;
+}
 
-// While alive, the grid steps are fused or not, as asked; then back to what they were, also
-// when an assertion leaves the test early.
-struct FusedGridSteps {
-    explicit FusedGridSteps(bool fused) : before_(fused_grid_steps()) {
-        set_fused_grid_steps(fused);
-    }
-    ~FusedGridSteps() { set_fused_grid_steps(before_); }
-    FusedGridSteps(const FusedGridSteps&) = delete;
-    FusedGridSteps& operator=(const FusedGridSteps&) = delete;
+// Options with the grid steps fused or not, as asked.
+inline SimulationOptions fused_grid_steps(bool fused) {
+    SimulationOptions options;
+    options.fused_grid_steps = fused;
+    return options;
+}
 
-  private:
-    bool before_;
-};
-
-// While alive, the grid kernels run the build of `level` (clamped to the CPU's); then the
-// level they had, also when an assertion leaves the test early.
-struct KernelBuild {
-    explicit KernelBuild(SimdLevel level) : before_(simd_level()) { set_simd_level(level); }
-    ~KernelBuild() { set_simd_level(before_); }
-    KernelBuild(const KernelBuild&) = delete;
-    KernelBuild& operator=(const KernelBuild&) = delete;
-
-  private:
-    SimdLevel before_;
-};
+// Options with the row kernels of `level`.
+inline SimulationOptions kernel_build(SimdLevel level) {
+    SimulationOptions options;
+    options.kernel_build = level;
+    return options;
+}
 
 // A vertical chain of `particles` grid particles (one column, the top one pinned), released
 // at rest length: spring s from the pin carries the weight below it, so at rest its length is

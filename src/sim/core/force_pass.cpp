@@ -60,14 +60,15 @@ void accumulate_spring_forces(const SpringGroup& group, std::span<const Vec3> po
 }
 
 void accumulate_forces(const Cloth& cloth, const ForceField& field, std::span<const Vec3> positions,
-                       std::span<const Vec3> velocities, std::span<Vec3> forces, WorkerPool* pool) {
+                       std::span<const Vec3> velocities, std::span<Vec3> forces, WorkerPool* pool,
+                       SimdLevel level) {
     const std::size_t count = positions.size();
     const double* mass = cloth.topology().masses.data();
     const Vec3* v = velocities.data();
     Vec3* f = forces.data();
     // A plain grid takes the structured pass (grid_force_pass.h): gravity, drag and springs
     // per direction over rows. Anything else takes the general one, spring by spring.
-    if (!accumulate_grid_forces(cloth, field, positions, velocities, forces, pool)) {
+    if (!accumulate_grid_forces(cloth, field, positions, velocities, forces, pool, level)) {
         // External forces first: they also initialise the accumulator.
         if (field.air_drag != 0.0) {
             for (std::size_t p = 0; p < count; ++p)

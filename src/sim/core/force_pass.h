@@ -7,6 +7,7 @@
 #include "parallel/worker_pool.h"
 #include "sim/collision/colliders.h"
 #include "sim/core/cloth.h"
+#include "sim/grid/kernel_build.h"
 
 namespace weft {
 
@@ -38,10 +39,11 @@ struct ForceField {
 // the zero inverse mass. A spring of zero length has no direction and exerts no force.
 //
 // With a pool, each spring colour is split between its threads; the result is the same bit
-// for bit whatever the number of threads (each particle gets its forces colour by colour).
+// for bit whatever the number of threads (each particle gets its forces colour by colour)
+// and whatever the kernel build `level` of the structured pass (kernel_build.h).
 void accumulate_forces(const Cloth& cloth, const ForceField& field, std::span<const Vec3> positions,
                        std::span<const Vec3> velocities, std::span<Vec3> forces,
-                       WorkerPool* pool = nullptr);
+                       WorkerPool* pool = nullptr, SimdLevel level = supported_simd_level());
 
 // Only the internal (spring) forces: the part that must conserve momentum.
 void accumulate_spring_forces(const SpringGroup& group, std::span<const Vec3> positions,

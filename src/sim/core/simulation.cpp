@@ -56,14 +56,21 @@ std::optional<std::string> Simulation::unsupported_feature(const Scene& /*scene*
     return std::nullopt;
 }
 
-Simulation::Simulation(const Scene& scene)
+Simulation::Simulation(const Scene& scene, const SimulationOptions& options)
     : scene_(scene),
       integrator_(scene.solver.integrator),
       step_function_(step_function(scene.solver.integrator)),
       dt_(scene.solver.dt) {
     if (auto why = unsupported_feature(scene)) throw std::invalid_argument(*why);
+    set_options(options);
     set_thread_count(default_thread_count());
     reset();
+}
+
+void Simulation::set_options(const SimulationOptions& options) {
+    workspace_.options = options;
+    workspace_.options.kernel_build = std::min(options.kernel_build, supported_simd_level());
+    divergence_guard_.set_kernel_build(workspace_.options.kernel_build);
 }
 
 void Simulation::set_thread_count(int threads) {

@@ -12,6 +12,7 @@
 #include "sim/collision/self_collision.h"
 #include "sim/core/cloth.h"
 #include "sim/core/force_pass.h"
+#include "sim/core/simulation_options.h"
 #include "sim/core/step_profile.h"
 #include "sim/guards/divergence.h"
 #include "sim/guards/energy_guard.h"
@@ -36,7 +37,7 @@ class Simulation {
   public:
     // The scene must be validated (the loader does that). Throws std::invalid_argument for a
     // valid scene that asks for something not modelled yet (see unsupported_feature).
-    explicit Simulation(const Scene& scene);
+    explicit Simulation(const Scene& scene, const SimulationOptions& options = {});
 
     // Why a valid scene cannot be simulated by this build, or nothing.
     static std::optional<std::string> unsupported_feature(const Scene& scene);
@@ -62,6 +63,11 @@ class Simulation {
 
     // Times the last implicit Euler step was halved (implicit_euler.cpp).
     int last_step_splits() const { return workspace_.implicit_last_splits; }
+
+    // How the steps compute (simulation_options.h); a kernel build the CPU lacks becomes the
+    // best it has.
+    const SimulationOptions& options() const { return workspace_.options; }
+    void set_options(const SimulationOptions& options);
 
     // When implicit Euler's solve stops (implicit_grid_solve.h).
     void set_implicit_solve_settings(const ImplicitSolveSettings& settings) {

@@ -28,9 +28,6 @@ SimdLevel detect_simd_level() {
     return SimdLevel::baseline;
 }
 
-std::atomic<SimdLevel> current_level{detect_simd_level()};
-std::atomic<bool> fused_steps_enabled{true};
-
 // Scratch of each thread (the pool's threads are persistent): grown on first use, so no
 // step allocates once the first has run.
 double* thread_scratch(int cols) {
@@ -73,10 +70,10 @@ bool use_threads(const Cloth& cloth, WorkerPool* pool) {
 // big enough, each band followed by `after_rows` on its particles; what the fused sweep found
 // in any band (nothing unless the job asks for it).
 grid_kernel::SweepFlags run_force_rows(const Cloth& cloth, const grid_kernel::Job& job,
-                                       WorkerPool* pool,
+                                       WorkerPool* pool, SimdLevel level,
                                        const RowsSteppedWork* after_rows = nullptr) {
-    const auto kernel = kernel_of(grid_kernel::force_rows_baseline, grid_kernel::force_rows_avx2,
-                                  grid_kernel::force_rows_avx512);
+    const auto kernel = kernel_of(level, grid_kernel::force_rows_baseline,
+                                  grid_kernel::force_rows_avx2, grid_kernel::force_rows_avx512);
     const auto cols = static_cast<std::size_t>(job.cols);
     if (!use_threads(cloth, pool)) {
         const grid_kernel::SweepFlags flags = kernel(job, 0, job.rows, thread_scratch(job.cols));
@@ -102,15 +99,6 @@ SimdLevel supported_simd_level() {
     return supported;
 }
 
-SimdLevel simd_level() {
-    return current_level.load(std::memory_order_relaxed);
-}
-
-void set_simd_level(SimdLevel level) {
-    level = std::min(level, supported_simd_level());
-    current_level.store(level, std::memory_order_relaxed);
-}
-
 const char* simd_level_name(SimdLevel level) {
     return level == SimdLevel::avx512 ? "avx-512"
            : level == SimdLevel::avx2 ? "avx2"
@@ -119,30 +107,22 @@ const char* simd_level_name(SimdLevel level) {
 
 bool accumulate_grid_forces(const Cloth& cloth, const ForceField& field,
                             std::span<const Vec3> positions, std::span<const Vec3> velocities,
-                            std::span<Vec3> forces, WorkerPool* pool) {
+                            std::span<Vec3> forces, WorkerPool* pool, SimdLevel level) {
     grid_kernel::Job job;
     if (!grid_stencil_usable(cloth) || !describe_stencil(cloth, positions, job)) return false;
     job.velocities = &velocities.data()->x;
     job.forces = &forces.data()->x;
     describe_field(field, job);
-    run_force_rows(cloth, job, pool);
+    run_force_rows(cloth, job, pool, level);
     return true;
-}
-
-void set_fused_grid_steps(bool enabled) {
-    fused_steps_enabled.store(enabled, std::memory_order_relaxed);
-}
-
-bool fused_grid_steps() {
-    return fused_steps_enabled.load(std::memory_order_relaxed);
 }
 
 bool step_grid_symplectic_euler(Cloth& cloth, const ForceField& field, double dt,
                                 std::vector<Vec3>& next_positions,
                                 std::vector<Vec3>& next_velocities, const SweepRequest* sweep,
-                                ParticleSweep* sweep_result, WorkerPool* pool,
+                                ParticleSweep* sweep_result, WorkerPool* pool, SimdLevel level,
                                 const RowsSteppedWork* after_rows) {
-    if (!fused_grid_steps() || !field.colliders.empty()) return false;
+    if (!field.colliders.empty()) return false;
     grid_kernel::Job job;
     if (!grid_stencil_usable(cloth) || !describe_stencil(cloth, cloth.positions, job)) return false;
     const std::size_t count = cloth.particle_count();
@@ -158,7 +138,7 @@ bool step_grid_symplectic_euler(Cloth& cloth, const ForceField& field, double dt
         job.reference_positions = &sweep->reference_positions->x;
         job.moved_limit_squared = sweep->limit_squared;
     }
-    const grid_kernel::SweepFlags flags = run_force_rows(cloth, job, pool, after_rows);
+    const grid_kernel::SweepFlags flags = run_force_rows(cloth, job, pool, level, after_rows);
     cloth.positions.swap(next_positions);
     cloth.velocities.swap(next_velocities);
     if (sweep && sweep_result) *sweep_result = {flags.non_finite, flags.moved};
@@ -184,12 +164,12 @@ double maybe_ratio_squared(double ratio) {
 }  // namespace
 
 std::optional<bool> grid_springs_maybe_longer_than(const Cloth& cloth, double ratio,
-                                                   WorkerPool* pool) {
+                                                   WorkerPool* pool, SimdLevel level) {
     const std::optional<grid_kernel::Job> described = spring_rows_job(cloth);
     if (!described) return std::nullopt;
     const grid_kernel::Job& job = *described;
     const double ratio_squared = maybe_ratio_squared(ratio);
-    const auto kernel = kernel_of(grid_kernel::rows_maybe_overstretched_baseline,
+    const auto kernel = kernel_of(level, grid_kernel::rows_maybe_overstretched_baseline,
                                   grid_kernel::rows_maybe_overstretched_avx2,
                                   grid_kernel::rows_maybe_overstretched_avx512);
     if (!use_threads(cloth, pool)) return kernel(job, ratio_squared, 0, job.rows);
@@ -202,12 +182,13 @@ std::optional<bool> grid_springs_maybe_longer_than(const Cloth& cloth, double ra
 }
 
 std::optional<grid_kernel::StretchHeadroom> grid_stretch_headroom(const Cloth& cloth, double ratio,
-                                                                  WorkerPool* pool) {
+                                                                  WorkerPool* pool,
+                                                                  SimdLevel level) {
     const std::optional<grid_kernel::Job> described = spring_rows_job(cloth);
     if (!described) return std::nullopt;
     const grid_kernel::Job& job = *described;
     const double ratio_squared = maybe_ratio_squared(ratio);
-    const auto kernel = kernel_of(grid_kernel::rows_stretch_headroom_baseline,
+    const auto kernel = kernel_of(level, grid_kernel::rows_stretch_headroom_baseline,
                                   grid_kernel::rows_stretch_headroom_avx2,
                                   grid_kernel::rows_stretch_headroom_avx512);
     if (!use_threads(cloth, pool)) return kernel(job, ratio, ratio_squared, 0, job.rows);
@@ -226,9 +207,9 @@ std::optional<grid_kernel::StretchHeadroom> grid_stretch_headroom(const Cloth& c
 
 ParticleSweep sweep_particles(std::span<const Vec3> positions, std::span<const Vec3> reference,
                               std::span<const Vec3> velocities, double limit_squared,
-                              WorkerPool* pool) {
+                              WorkerPool* pool, SimdLevel level) {
     const auto kernel =
-        kernel_of(grid_kernel::sweep_particles_baseline, grid_kernel::sweep_particles_avx2,
+        kernel_of(level, grid_kernel::sweep_particles_baseline, grid_kernel::sweep_particles_avx2,
                   grid_kernel::sweep_particles_avx512);
     const std::size_t count = positions.size();
     auto sweep = [&](std::size_t begin, std::size_t end, bool& non_finite, bool& moved) {

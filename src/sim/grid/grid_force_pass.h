@@ -14,32 +14,20 @@
 #include "parallel/worker_pool.h"
 #include "sim/core/cloth.h"
 #include "sim/grid/grid_force_kernel.h"
+#include "sim/grid/kernel_build.h"
 
 namespace weft {
 
 struct ForceField;
 
-// Which build of the row kernel runs. The default is the best the CPU supports.
-enum class SimdLevel { baseline, avx2, avx512 };
-SimdLevel supported_simd_level();
-SimdLevel simd_level();
-void set_simd_level(SimdLevel level);  // clamped to what the CPU supports; for tests, benches
-const char* simd_level_name(SimdLevel level);
-
-// The build of a kernel function for the current SIMD level (the structured force pass's and
-// the structured implicit solve's row kernels are each built three times).
-template <class Function>
-Function* kernel_of(Function* baseline, Function* avx2, Function* avx512) {
-    const SimdLevel level = simd_level();
-    return level == SimdLevel::avx512 ? avx512 : level == SimdLevel::avx2 ? avx2 : baseline;
-}
+// Every pass below runs the kernel build `level` (kernel_build.h).
 
 // Gravity, air drag and every spring force into `forces` (overwritten), or false — touching
 // nothing — when the cloth has no usable grid stencil. Repulsion contacts are the caller's
 // (accumulate_forces adds them after).
 bool accumulate_grid_forces(const Cloth& cloth, const ForceField& field,
                             std::span<const Vec3> positions, std::span<const Vec3> velocities,
-                            std::span<Vec3> forces, WorkerPool* pool);
+                            std::span<Vec3> forces, WorkerPool* pool, SimdLevel level);
 
 // The divergence guard's sweep over the particles (divergence.h): whether any position or
 // velocity is not finite, and whether any particle is at |x - x_ref|² >= limit_squared from
@@ -70,35 +58,35 @@ struct SweepRequest {
 // new state is then in next_positions and next_velocities; the cloth's arrays still hold
 // the step's start.
 //
-// set_fused_grid_steps(false) turns the fusion off (tests and benchmarks compare the two).
+// Whether a step is fused is the caller's choice (SimulationOptions::fused_grid_steps: tests
+// and benchmarks compare the two).
 struct RowsSteppedWork {
     void (*run)(void* context, std::size_t begin, std::size_t end) = nullptr;
     void* context = nullptr;
 };
-void set_fused_grid_steps(bool enabled);
-bool fused_grid_steps();
 bool step_grid_symplectic_euler(Cloth& cloth, const ForceField& field, double dt,
                                 std::vector<Vec3>& next_positions,
                                 std::vector<Vec3>& next_velocities, const SweepRequest* sweep,
-                                ParticleSweep* sweep_result, WorkerPool* pool,
+                                ParticleSweep* sweep_result, WorkerPool* pool, SimdLevel level,
                                 const RowsSteppedWork* after_rows = nullptr);
 
 // The divergence guard's stretch test over the stencil: whether some live spring may be
 // longer than `ratio` rest lengths, by |d|² > ratio² (1 - 1e-9) L² — a superset of the exact
 // test |d| > ratio L, which the caller then runs. Nothing when there is no usable stencil.
 std::optional<bool> grid_springs_maybe_longer_than(const Cloth& cloth, double ratio,
-                                                   WorkerPool* pool);
+                                                   WorkerPool* pool, SimdLevel level);
 
 // The guard's pass after a far move, over the stencil: grid_springs_maybe_longer_than's test
 // and the headroom min (ratio L - |d|) and scale max (ratio L) over live springs (the same
 // numbers as spring by spring: minima and maxima are exact in any order). Nothing when there
 // is no usable stencil.
 std::optional<grid_kernel::StretchHeadroom> grid_stretch_headroom(const Cloth& cloth, double ratio,
-                                                                  WorkerPool* pool);
+                                                                  WorkerPool* pool,
+                                                                  SimdLevel level);
 
 // The guard's sweep on its own, vectorised with the same kernel builds.
 ParticleSweep sweep_particles(std::span<const Vec3> positions, std::span<const Vec3> reference,
                               std::span<const Vec3> velocities, double limit_squared,
-                              WorkerPool* pool);
+                              WorkerPool* pool, SimdLevel level);
 
 }  // namespace weft

@@ -80,12 +80,13 @@ bool state_non_finite(const Cloth& cloth, WorkerPool* pool) {
 }
 
 // Whether the exact scan below could find anything.
-bool maybe_diverged(const Cloth& cloth, bool check_runaway_stretch, WorkerPool* pool) {
+bool maybe_diverged(const Cloth& cloth, bool check_runaway_stretch, WorkerPool* pool,
+                    SimdLevel level) {
     if (state_non_finite(cloth, pool)) return true;
     if (!check_runaway_stretch) return false;
     std::atomic<bool> found{false};
     // A grid tests its springs per direction over rows; anything else spring by spring.
-    if (auto suspect = grid_springs_maybe_longer_than(cloth, runaway_stretch_ratio, pool))
+    if (auto suspect = grid_springs_maybe_longer_than(cloth, runaway_stretch_ratio, pool, level))
         return *suspect;
     for (const SpringGroup& group : cloth.topology().spring_groups) {
         for_ranges(pool, group.springs.size(), [&](std::size_t begin, std::size_t end) {
@@ -99,8 +100,8 @@ bool maybe_diverged(const Cloth& cloth, bool check_runaway_stretch, WorkerPool* 
 }  // namespace
 
 std::optional<std::string> find_divergence(const Cloth& cloth, bool check_runaway_stretch,
-                                           WorkerPool* pool) {
-    if (!maybe_diverged(cloth, check_runaway_stretch, pool)) return std::nullopt;
+                                           WorkerPool* pool, SimdLevel level) {
+    if (!maybe_diverged(cloth, check_runaway_stretch, pool, level)) return std::nullopt;
     for (std::size_t p = 0; p < cloth.particle_count(); ++p) {
         if (!is_finite(cloth.positions[p]))
             return particle_name(cloth, p) + " has a non-finite position";
@@ -182,19 +183,21 @@ std::optional<std::string> DivergenceGuard::check(const Cloth& cloth, bool check
             swept ? *swept
                   : sweep_particles(cloth.positions,
                                     {request->reference_positions, cloth.particle_count()},
-                                    cloth.velocities, request->limit_squared, pool);
+                                    cloth.velocities, request->limit_squared, pool, kernel_build_);
         if (!sweep.non_finite && !sweep.moved) return std::nullopt;
     }
     // A grid's springs answer the runaway test and give the next reference's headroom in one
     // pass (the same numbers as the scans below, which took two passes at every frame-sized
     // implicit step of a large sheet, one of them spring by spring).
     if (check_runaway_stretch)
-        if (const auto grid = grid_stretch_headroom(cloth, runaway_stretch_ratio, pool);
+        if (const auto grid =
+                grid_stretch_headroom(cloth, runaway_stretch_ratio, pool, kernel_build_);
             grid && !grid->maybe_longer && !state_non_finite(cloth, pool)) {
             keep_reference(cloth, grid->headroom, grid->scale);
             return std::nullopt;
         }
-    std::optional<std::string> verdict = find_divergence(cloth, check_runaway_stretch, pool);
+    std::optional<std::string> verdict =
+        find_divergence(cloth, check_runaway_stretch, pool, kernel_build_);
     if (verdict) {
         reference_valid_ = false;
         return verdict;

@@ -29,8 +29,10 @@ double largest_stretch_ratio(const Cloth& cloth, WorkerPool* pool = nullptr);
 // anything is wrong (no square root, no branch per value, split between the pool's threads)
 // runs first, and only if it finds something does the exact scan run to say what. The
 // verdict is the same as the exact scan's (see divergence.cpp) whatever the thread count.
+// `level`: the kernel build of the grid's passes (kernel_build.h; the same verdict with any).
 std::optional<std::string> find_divergence(const Cloth& cloth, bool check_runaway_stretch,
-                                           WorkerPool* pool = nullptr);
+                                           WorkerPool* pool = nullptr,
+                                           SimdLevel level = supported_simd_level());
 
 // The guard a simulation runs after every step: the same verdict and message as
 // find_divergence, but a sound step usually costs one streaming pass over the particles
@@ -45,6 +47,8 @@ std::optional<std::string> find_divergence(const Cloth& cloth, bool check_runawa
 // Removing springs (tearing, cuts) only raises H, so the bound survives it.
 class DivergenceGuard {
   public:
+    // The kernel build of its sweeps and spring passes (kernel_build.h).
+    void set_kernel_build(SimdLevel level) { kernel_build_ = level; }
     // `swept`: the sweep of this very state for sweep_request(), if a fused step has done
     // it already (grid_force_pass.h).
     std::optional<std::string> check(const Cloth& cloth, bool check_runaway_stretch,
@@ -64,6 +68,7 @@ class DivergenceGuard {
     double headroom_ = 0.0;                  // m, H
     double length_scale_ = 0.0;              // m, the longest ratio L: scales the margin
     bool reference_valid_ = false;
+    SimdLevel kernel_build_ = supported_simd_level();
 };
 
 }  // namespace weft

@@ -37,7 +37,8 @@ void IntegratorWorkspace::resize(std::size_t particle_count, Integrator integrat
 
 void evaluate_forces(const Cloth& cloth, const ForceField& field, std::span<const Vec3> positions,
                      std::span<const Vec3> velocities, IntegratorWorkspace& work) {
-    accumulate_forces(cloth, field, positions, velocities, work.forces, work.pool);
+    accumulate_forces(cloth, field, positions, velocities, work.forces, work.pool,
+                      work.options.kernel_build);
     ++work.force_evaluations;
 }
 

@@ -11,6 +11,7 @@
 
 #include "sim/core/cloth.h"
 #include "sim/core/force_pass.h"
+#include "sim/core/simulation_options.h"
 #include "sim/core/step_profile.h"
 #include "sim/grid/grid_force_pass.h"
 #include "sim/integrators/implicit/implicit_grid_solve.h"
@@ -69,6 +70,7 @@ struct IntegratorWorkspace {
     bool history_valid = false;
     std::uint64_t force_evaluations = 0;  // total calls of the force pass, for cost studies
     WorkerPool* pool = nullptr;           // threads for the force pass (owned by Simulation)
+    SimulationOptions options;            // the kernel build and the paths taken on grids
 
     // Sizes the arrays `integrator` steps with for `particle_count` particles (zeroed) and
     // frees every other method's, so a workspace, and each copy of it (a snapshot, a run side

@@ -8,9 +8,10 @@ namespace weft {
 bool step_symplectic_euler_fused(Cloth& cloth, const ForceField& field, double dt,
                                  IntegratorWorkspace& work, const RowsSteppedWork* after_rows) {
     ParticleSweep sweep;
-    if (!step_grid_symplectic_euler(cloth, field, dt, work.next_positions, work.next_velocities,
+    if (!work.options.fused_grid_steps ||
+        !step_grid_symplectic_euler(cloth, field, dt, work.next_positions, work.next_velocities,
                                     work.sweep_request ? &*work.sweep_request : nullptr, &sweep,
-                                    work.pool, after_rows))
+                                    work.pool, work.options.kernel_build, after_rows))
         return false;
     ++work.force_evaluations;
     if (work.sweep_request) work.sweep_result = sweep;

@@ -21,9 +21,9 @@ void CoarseRows::size_for(int level_rows, int level_cols) {
 void multiply_coarse_row(const CoarseRows& matrix, int row, CoarseVectorRow above,
                          CoarseVectorRow here, CoarseVectorRow below, float* __restrict out_x,
                          float* __restrict out_y, float* __restrict out_z) {
-    const auto multiply = kernel_of(implicit_kernel::multiply_coarse_row_baseline,
-                                    implicit_kernel::multiply_coarse_row_avx2,
-                                    implicit_kernel::multiply_coarse_row_avx512);
+    const auto multiply = kernel_of(
+        matrix.kernel_build, implicit_kernel::multiply_coarse_row_baseline,
+        implicit_kernel::multiply_coarse_row_avx2, implicit_kernel::multiply_coarse_row_avx512);
     multiply(matrix, row, above, here, below, out_x, out_y, out_z);
 }
 

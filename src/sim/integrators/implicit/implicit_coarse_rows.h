@@ -12,6 +12,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "sim/grid/kernel_build.h"
+
 namespace weft {
 
 struct CoarseRows {
@@ -21,6 +23,7 @@ struct CoarseRows {
     // Per block, per entry (xx yy zz xy xz yz): rows + 1 rows of row_floats, the first all
     // zeros (the row above row 0).
     std::vector<float> storage;
+    SimdLevel kernel_build = supported_simd_level();  // of multiply_coarse_row
 
     void size_for(int level_rows, int level_cols);
     // Entry e of block b at node (row, -1 .. cols); row may be -1 (zeros).
@@ -49,7 +52,7 @@ void multiply_coarse_row(const CoarseRows& matrix, int row, CoarseVectorRow abov
                          float* __restrict out_y, float* __restrict out_z);
 
 namespace implicit_kernel {
-// Its builds (implicit_grid_kernel_build.inl); multiply_coarse_row picks one by simd_level().
+// Its builds (implicit_grid_kernel_build.inl); multiply_coarse_row picks the matrix's kernel_build.
 void multiply_coarse_row_baseline(const CoarseRows& matrix, int row, CoarseVectorRow above,
                                   CoarseVectorRow here, CoarseVectorRow below, float* out_x,
                                   float* out_y, float* out_z);

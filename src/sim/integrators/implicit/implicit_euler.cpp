@@ -69,8 +69,8 @@ void take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
 
 // Whether some live spring is longer than `ratio` rest lengths: the stencil's vectorised
 // test first, which almost always settles it, then the exact one.
-bool some_spring_longer_than(const Cloth& cloth, double ratio, WorkerPool* pool) {
-    const std::optional<bool> maybe = grid_springs_maybe_longer_than(cloth, ratio, pool);
+bool some_spring_longer_than(const Cloth& cloth, double ratio, WorkerPool* pool, SimdLevel level) {
+    const std::optional<bool> maybe = grid_springs_maybe_longer_than(cloth, ratio, pool, level);
     if (maybe && !*maybe) return false;
     return largest_stretch_ratio(cloth, pool) > ratio;
 }
@@ -147,7 +147,8 @@ int step_or_split(Cloth& cloth, const ForceField& field, double dt, IntegratorWo
     work.implicit_last_iterations += iterations_before;
     clock.lap(timed_inside);
     const bool kept = !may_split ||
-                      !some_spring_longer_than(cloth, settings.split_stretch_ratio, work.pool) ||
+                      !some_spring_longer_than(cloth, settings.split_stretch_ratio, work.pool,
+                                               work.options.kernel_build) ||
                       !(largest_linearisation_error(cloth, work.implicit_step_start_positions,
                                                     settings.split_stretch_ratio,
                                                     work.pool) > settings.split_force_error);
@@ -185,8 +186,10 @@ namespace {
 
 void take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
                           IntegratorWorkspace& work) {
-    if (step_implicit_euler_grid(cloth, field, dt, work.implicit_settings, work.implicit_grid,
-                                 work.pool, work.profiling ? &work.implicit_times : nullptr)) {
+    if (work.options.structured_implicit_solve &&
+        step_implicit_euler_grid(cloth, field, dt, work.implicit_settings, work.implicit_grid,
+                                 work.pool, work.options.kernel_build,
+                                 work.profiling ? &work.implicit_times : nullptr)) {
         ++work.force_evaluations;
         work.implicit_last_iterations = work.implicit_grid.last_iterations;
         work.implicit_last_relative_residual = work.implicit_grid.last_relative_residual;

@@ -11,8 +11,6 @@
 namespace weft {
 namespace {
 
-std::atomic<bool> structured_solve_enabled{true};
-
 // Rows are split between threads only when there are enough particles to pay for the
 // hand-offs (four per iteration).
 constexpr std::size_t min_particles_for_threads = 4096;
@@ -46,14 +44,6 @@ double largest_of_rows(const double* per_row, int rows) {
 }
 
 }  // namespace
-
-void set_structured_implicit_solve(bool enabled) {
-    structured_solve_enabled.store(enabled, std::memory_order_relaxed);
-}
-
-bool structured_implicit_solve() {
-    return structured_solve_enabled.load(std::memory_order_relaxed);
-}
 
 void ImplicitGridSolver::prepare(int grid_rows, int grid_cols) {
     if (grid_rows == rows && grid_cols == cols && !storage.empty()) return;
@@ -133,9 +123,8 @@ void ImplicitGridSolver::bind() {
 
 bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
                               const ImplicitSolveSettings& settings, ImplicitGridSolver& solver,
-                              WorkerPool* pool, ImplicitPhaseTimes* times) {
-    if (!structured_implicit_solve() || !field.colliders.empty() || !grid_stencil_usable(cloth))
-        return false;
+                              WorkerPool* pool, SimdLevel level, ImplicitPhaseTimes* times) {
+    if (!field.colliders.empty() || !grid_stencil_usable(cloth)) return false;
     if (cloth.topology().grid_stencil.directions.size() > implicit_kernel::max_directions)
         return false;
     ImplicitPhaseTimes unused;
@@ -146,7 +135,7 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     // f(x0, v = 0): gravity, the wind's push and the elastic springs; the dampers are
     // linear in v and live in the matrix (see implicit_grid_kernel.inl).
     if (!accumulate_grid_forces(cloth, field, cloth.positions, solver.zero_velocities,
-                                solver.static_forces, pool))
+                                solver.static_forces, pool, level))
         return false;
     job.dt = dt;
     job.air_drag = field.air_drag;
@@ -174,7 +163,7 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
 
     const double warm_start = settings.warm_start && solver.has_previous_change ? 1.0 : 0.0;
     const auto setup =
-        kernel_of(implicit_kernel::setup_rows_baseline, implicit_kernel::setup_rows_avx2,
+        kernel_of(level, implicit_kernel::setup_rows_baseline, implicit_kernel::setup_rows_avx2,
                   implicit_kernel::setup_rows_avx512);
     over_rows(solver, pool, [&](int begin, int end) { setup(job, begin, end, warm_start); });
     // Particles in the hand (drag.h): constrained, with their velocities prescribed (Baraff &
@@ -198,13 +187,13 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     double* sums = solver.row_sums.data();
     const implicit_kernel::RowSums row_sums{sums, sums + rows, sums + 2 * rows, sums + 3 * rows};
     const auto residual =
-        kernel_of(implicit_kernel::residual_rows_baseline, implicit_kernel::residual_rows_avx2,
-                  implicit_kernel::residual_rows_avx512);
+        kernel_of(level, implicit_kernel::residual_rows_baseline,
+                  implicit_kernel::residual_rows_avx2, implicit_kernel::residual_rows_avx512);
     const auto direction =
-        kernel_of(implicit_kernel::direction_rows_baseline, implicit_kernel::direction_rows_avx2,
-                  implicit_kernel::direction_rows_avx512);
+        kernel_of(level, implicit_kernel::direction_rows_baseline,
+                  implicit_kernel::direction_rows_avx2, implicit_kernel::direction_rows_avx512);
     const auto update =
-        kernel_of(implicit_kernel::update_rows_baseline, implicit_kernel::update_rows_avx2,
+        kernel_of(level, implicit_kernel::update_rows_baseline, implicit_kernel::update_rows_avx2,
                   implicit_kernel::update_rows_avx512);
     const bool multilevel = settings.multilevel;
     // The local bound (ImplicitSolveSettings): the largest velocity error a particle may
@@ -232,7 +221,7 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
             if (first_round) {
                 solver.multilevel.weight = settings.coarse_weight;
                 solver.multilevel.smoothing = settings.coarse_smoothing;
-                solver.multilevel.build(job, pool);
+                solver.multilevel.build(job, pool, level);
                 clock.lap(phases.coarse_levels);
             }
             r_z += solver.multilevel.apply(job, false, pool);
@@ -271,7 +260,7 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     if (job.has_contacts) {
         // The surfaces' impulses: where one pulled, its particle is let go and the step
         // solved again from where it stands (implicit_contacts.h); then friction.
-        const auto unfiltered = kernel_of(implicit_kernel::unfiltered_product_rows_baseline,
+        const auto unfiltered = kernel_of(level, implicit_kernel::unfiltered_product_rows_baseline,
                                           implicit_kernel::unfiltered_product_rows_avx2,
                                           implicit_kernel::unfiltered_product_rows_avx512);
         over_rows(solver, pool, [&](int begin, int end) { unfiltered(job, begin, end); });

@@ -103,12 +103,10 @@ struct ImplicitGridSolver {
 // takes explicitly). Particles about to meet the field's impulse solids are held on their
 // surfaces inside the solve (implicit_contacts.h). `times`, when given, gains the step's
 // phases.
+// `level`: the build of its row kernels (kernel_build.h); every build gives the same bits.
 bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
                               const ImplicitSolveSettings& settings, ImplicitGridSolver& solver,
-                              WorkerPool* pool, ImplicitPhaseTimes* times = nullptr);
-
-// Turns the structured solve off (tests and studies compare it with the general path).
-void set_structured_implicit_solve(bool enabled);
-bool structured_implicit_solve();
+                              WorkerPool* pool, SimdLevel level,
+                              ImplicitPhaseTimes* times = nullptr);
 
 }  // namespace weft

@@ -423,7 +423,8 @@ void finish_smoothing(const ImplicitCoarseLevel& first, const CoarseRows& matrix
 }
 }  // namespace
 
-void ImplicitMultilevel::build(const implicit_kernel::Job& job, WorkerPool* pool) {
+void ImplicitMultilevel::build(const implicit_kernel::Job& job, WorkerPool* pool, SimdLevel level) {
+    first_rows.kernel_build = level;
     // Down to a level of at most coarsest_side nodes a side, solved exactly.
     std::size_t count = 0;
     for (int rows = job.rows, cols = job.cols; rows > coarsest_side || cols > coarsest_side;

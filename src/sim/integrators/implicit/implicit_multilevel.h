@@ -58,8 +58,9 @@ struct ImplicitMultilevel {
     std::vector<float> spread;  // the first level's correction along fine columns (x, y, z rows)
 
     // Builds every coarse level from the fine system of `job` (its direction terms, the
-    // diagonal blocks and the free mask of the setup and residual passes).
-    void build(const implicit_kernel::Job& job, WorkerPool* pool);
+    // diagonal blocks and the free mask of the setup and residual passes); the first level's
+    // products run the kernel build `level` (kernel_build.h).
+    void build(const implicit_kernel::Job& job, WorkerPool* pool, SimdLevel level);
     // z += P (coarse correction of Pᵀ r) over the whole fine grid; returns r · (what it
     // added to z), so the caller's r · z stays exact without another pass. `restricted`:
     // the fine passes have already summed r into the first level (attach() below).

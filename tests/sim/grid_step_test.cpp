@@ -50,7 +50,7 @@ constexpr double step_dt = 2e-4;  // s
 // The separate path: the force pass, then step_symplectic_euler's own loop.
 Cloth separately_stepped(Cloth cloth, const ForceField& field) {
     IntegratorWorkspace work;
-    work.options.fused_grid_steps = false;
+    work.settings.options.fused_grid_steps = false;
     work.resize(cloth.particle_count(), Integrator::symplectic_euler);
     step_symplectic_euler(cloth, field, step_dt, work);
     return cloth;

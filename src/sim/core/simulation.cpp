@@ -57,10 +57,7 @@ std::optional<std::string> Simulation::unsupported_feature(const Scene& /*scene*
 }
 
 Simulation::Simulation(const Scene& scene, const SimulationOptions& options)
-    : scene_(scene),
-      integrator_(scene.solver.integrator),
-      step_function_(step_function(scene.solver.integrator)),
-      dt_(scene.solver.dt) {
+    : scene_(scene), integrator_(scene.solver.integrator), dt_(scene.solver.dt) {
     if (auto why = unsupported_feature(scene)) throw std::invalid_argument(*why);
     set_options(options);
     set_thread_count(default_thread_count());
@@ -68,14 +65,15 @@ Simulation::Simulation(const Scene& scene, const SimulationOptions& options)
 }
 
 void Simulation::set_options(const SimulationOptions& options) {
-    workspace_.options = options;
-    workspace_.options.kernel_build = std::min(options.kernel_build, supported_simd_level());
-    divergence_guard_.set_kernel_build(workspace_.options.kernel_build);
+    workspace_.settings.options = options;
+    workspace_.settings.options.kernel_build =
+        std::min(options.kernel_build, supported_simd_level());
+    divergence_guard_.set_kernel_build(workspace_.settings.options.kernel_build);
 }
 
 void Simulation::set_thread_count(int threads) {
     pool_ = std::make_shared<WorkerPool>(threads);
-    workspace_.pool = pool_.get();
+    workspace_.settings.pool = pool_.get();
 }
 
 void Simulation::reset() {
@@ -83,7 +81,7 @@ void Simulation::reset() {
     switched_off_.clear();
     set_force_field(scene_.forces.gravity, scene_.forces.air_drag, scene_.forces.wind);
     workspace_.resize(cloth_.particle_count(), integrator_);
-    workspace_.pool = pool_.get();
+    workspace_.settings.pool = pool_.get();
     drag_ = DragHandle{};
     // The floor goes under the cloth as it starts, and stays there through every edit.
     floor_height_ = floor_height(cloth_, make_colliders(scene_.colliders));
@@ -126,17 +124,64 @@ StepReport Simulation::step() {
     return report;
 }
 
+// What one step carries from phase to phase: the guard's sweep, kept through the
+// corrections (sweep_watch.h), the work done on the fused step's rows, and what the
+// corrections moved.
+struct Simulation::StepInProgress {
+    explicit StepInProgress(Simulation& simulation)
+        : measured(simulation.cloth_.particle_count()),
+          rows_work{simulation.colliders_,
+                    simulation.workspace_.scratch.next_positions,
+                    simulation.workspace_.scratch.next_velocities,
+                    simulation.cloth_,
+                    nullptr,
+                    simulation.self_collision_ ? &*simulation.self_collision_ : nullptr,
+                    measured} {}
+    bool held = false;                   // the hand holds the cloth through the step
+    bool check_runaway_stretch = false;  // the divergence guard's test (not with tearing)
+    std::optional<SweepWatch> watch;
+    SweepWatch* watching = nullptr;  // the watch, while its sweep stands
+    SelfCollision::MeasuredMoves measured;
+    OnSteppedRows rows_work;
+    RowsSteppedWork after_rows{OnSteppedRows::run, &rows_work};
+    std::size_t corrections = 0;  // particles the corrections after the step moved
+};
+
 StepReport Simulation::take_step(bool judge_grip) {
     StepReport report;
     PhaseClock clock(profiling_);
-    workspace_.profiling = profiling_;
-    workspace_.implicit_times = {};
+    StepInProgress step(*this);
+    begin_step(step, report);
+    integrate(integrator_, cloth_, field_, dt_, workspace_);
+    clear_step_field();
+    clock.lap(report.times.integrate);
+    report.times.implicit = workspace_.statistics.implicit_times;
+    limit_strain_after_step(step);
+    clock.lap(report.times.strain_limit);
+    report.contacts = resolve_contacts(step);
+    if (step.held && !hold_in_hand_after_step(step, judge_grip)) {
+        report.hand_slipped = true;  // step() takes it again without the hand
+        clock.lap(report.times.contacts);
+        return report;
+    }
+    clock.lap(report.times.contacts);
+    time_ += dt_;
+    ++steps_taken_;
+    report.springs_torn = tear_after_step();
+    clock.lap(report.times.tearing);
+    report.divergence = check_guards(step, report.springs_torn);
+    clock.lap(report.times.guards);
+    return report;
+}
+
+void Simulation::begin_step(StepInProgress& step, StepReport& report) {
+    workspace_.settings.profiling = profiling_;
+    workspace_.statistics.implicit_times = {};
     // The hand's particles get the velocity that takes them where the hand goes (drag.h).
     // The field points at them only for the step, so a copied Simulation never holds a
     // pointer into another one.
-    const bool held = drag_.active();
-    report.held = held;
-    if (held) start_hand_motion(drag_, cloth_, dt_);
+    step.held = report.held = drag_.active();
+    if (step.held) start_hand_motion(drag_, cloth_, dt_);
     field_.held = drag_.particles;
     // Gusts: the wind of this step's start (gusts.h), held through the step.
     if (scene_.forces.gust > 0.0)
@@ -144,48 +189,32 @@ StepReport Simulation::take_step(bool judge_grip) {
     field_.colliders =
         has_repulsion_ ? std::span<const Collider>(colliders_) : std::span<const Collider>();
     field_.solids = colliders_;
-    const bool check_runaway_stretch = !scene_.tear_max_stretch;
-    workspace_.sweep_request = divergence_guard_.sweep_request(cloth_, check_runaway_stretch);
-    workspace_.sweep_result.reset();
-    // The guard's sweep, kept through the corrections after the step (sweep_watch.h); what
-    // the step's own sweep found is added once it is done.
-    std::optional<SweepWatch> watch;
-    if (workspace_.sweep_request) watch.emplace(*workspace_.sweep_request);
+    // The guard's sweep, done by a fused step on its way and kept through the corrections
+    // after it; what the step's own sweep found is added once it is done.
+    step.check_runaway_stretch = !scene_.tear_max_stretch;
+    OnTheWay& way = workspace_.on_the_way;
+    way.sweep_request = divergence_guard_.sweep_request(cloth_, step.check_runaway_stretch);
+    if (way.sweep_request) {
+        step.watch.emplace(*way.sweep_request);
+        step.rows_work.watch = &*step.watch;
+    }
     // The contacts and self-collision's measure ride on the fused step's rows when nothing
-    // comes between them and the step (the strain limiter would).
+    // comes between them and the step (the strain limiter would). Self-collision judges the
+    // step by where each particle went from (self_collision.h).
     const bool on_rows =
         !scene_.strain_limit_max_strain && (!colliders_.empty() || self_collision_);
-    SelfCollision::MeasuredMoves measured(cloth_.particle_count());
-    OnSteppedRows rows_work{
-        colliders_, workspace_.next_positions, workspace_.next_velocities,
-        cloth_,     watch ? &*watch : nullptr, self_collision_ ? &*self_collision_ : nullptr,
-        measured};
-    const RowsSteppedWork after_rows{OnSteppedRows::run, &rows_work};
-    bool corrected_on_rows = false;
-    // Self-collision judges the step by where each particle went from (self_collision.h).
-    // The fused grid step leaves those positions in its output buffer; any other step is
-    // taken in place, so they are copied first.
-    std::span<const Vec3> step_start;
-    if (integrator_ == Integrator::symplectic_euler &&
-        step_symplectic_euler_fused(cloth_, field_, dt_, workspace_,
-                                    on_rows ? &after_rows : nullptr)) {
-        step_start = workspace_.next_positions;
-        corrected_on_rows = on_rows;
-    } else {
-        if (self_collision_) {
-            step_start_ = cloth_.positions;
-            step_start = step_start_;
-        }
-        step_function_(cloth_, field_, dt_, workspace_);
-    }
+    way.after_rows = on_rows ? &step.after_rows : nullptr;
+    way.keep_start_positions = self_collision_.has_value();
+}
+
+void Simulation::clear_step_field() {
     field_.held = {};
     field_.colliders = {};
     field_.solids = {};
-    clock.lap(report.times.integrate);
-    report.times.implicit = workspace_.implicit_times;
-    // Corrections of positions and velocities after the step; any of them makes the history
-    // the Verlets carry stale.
-    std::size_t corrections = 0;
+    workspace_.on_the_way.after_rows = nullptr;
+}
+
+void Simulation::limit_strain_after_step(StepInProgress& step) {
     std::size_t strain_corrections = 0;
     if (scene_.strain_limit_max_strain)
         strain_corrections = limit_strain(cloth_, *scene_.strain_limit_max_strain, dt_);
@@ -195,82 +224,83 @@ StepReport Simulation::take_step(bool judge_grip) {
     // instead, every step the limit acts, turns the method into forward Euler in velocity,
     // which gains energy: course_pinned.toml, held at the limit every step, vibrated at
     // 3 m/s rms (70 J of kinetic energy in a 15 kg sheet at rest) at any dt.
-    if (integrator_ != Integrator::verlet) corrections += strain_corrections;
-    clock.lap(report.times.strain_limit);
+    if (integrator_ != Integrator::verlet) step.corrections += strain_corrections;
     // The step's sweep for the guard stays valid through the contacts and self-collision if
     // they check what they move (sweep_watch.h); the strain limiter moves too many particles
     // for that, and after its corrections the guard sweeps again.
-    SweepWatch* watching = nullptr;
-    if (watch && workspace_.sweep_result && strain_corrections == 0) {
-        watch->add(*workspace_.sweep_result);
-        watching = &*watch;
+    if (step.watch && workspace_.on_the_way.sweep_result && strain_corrections == 0) {
+        step.watch->add(*workspace_.on_the_way.sweep_result);
+        step.watching = &*step.watch;
     }
-    if (corrected_on_rows)
-        report.contacts += rows_work.contacts.load(std::memory_order_relaxed);
+}
+
+std::size_t Simulation::resolve_contacts(StepInProgress& step) {
+    const OnTheWay& way = workspace_.on_the_way;
+    std::size_t contacts = 0;
+    if (way.rows_done)
+        contacts += step.rows_work.contacts.load(std::memory_order_relaxed);
     else if (!colliders_.empty())
-        report.contacts += resolve_impulse_contacts(colliders_, cloth_, pool_.get(), watching);
+        contacts += resolve_impulse_contacts(colliders_, cloth_, pool_.get(), step.watching);
     // Self-collision goes after the contacts and keeps the particles out of the solids itself.
     if (self_collision_)
-        report.contacts +=
-            self_collision_->resolve(cloth_, colliders_, pool_.get(), step_start, watching,
-                                     corrected_on_rows ? &measured : nullptr);
-    corrections += report.contacts;
+        contacts +=
+            self_collision_->resolve(cloth_, colliders_, pool_.get(), way.start_positions,
+                                     step.watching, way.rows_done ? &step.measured : nullptr);
+    step.corrections += contacts;
+    return contacts;
+}
+
+bool Simulation::hold_in_hand_after_step(StepInProgress& step, bool judge_grip) {
     // Whatever the step and the corrections did to the held particles, they end it where the
     // hand put them. Not a correction for the Verlets' history: their previous positions are
     // where the hand had them, which is how the hand moved them.
-    if (held) {
-        hold_in_hand(drag_, cloth_);
-        if (judge_grip && largest_grip_stretch(drag_, cloth_) > drag_.grip_stretch) {
-            report.hand_slipped = true;  // step() takes it again without the hand
-            clock.lap(report.times.contacts);
-            return report;
-        }
-        if (watching)
-            for (const std::uint32_t p : drag_.particles)
-                watching->check(p, cloth_.positions[p], cloth_.velocities[p]);
-    }
-    clock.lap(report.times.contacts);
-    time_ += dt_;
-    ++steps_taken_;
-    if (scene_.tear_max_stretch) {
-        torn_.clear();
-        report.springs_torn = tear_overstretched_springs(cloth_, *scene_.tear_max_stretch, &torn_);
-    }
-    clock.lap(report.times.tearing);
+    hold_in_hand(drag_, cloth_);
+    if (judge_grip && largest_grip_stretch(drag_, cloth_) > drag_.grip_stretch) return false;
+    if (step.watching)
+        for (const std::uint32_t p : drag_.particles)
+            step.watching->check(p, cloth_.positions[p], cloth_.velocities[p]);
+    return true;
+}
+
+std::size_t Simulation::tear_after_step() {
+    if (!scene_.tear_max_stretch) return 0;
+    torn_.clear();
+    return tear_overstretched_springs(cloth_, *scene_.tear_max_stretch, &torn_);
+}
+
+std::optional<std::string> Simulation::check_guards(const StepInProgress& step,
+                                                    std::size_t springs_torn) {
     // Forces changed with the topology; the Verlets' carried acceleration is stale.
-    if (report.springs_torn || corrections) workspace_.history_valid = false;
-    // With tearing on, a runaway spring breaks instead of stretching without bound, so only
-    // non-finite values count as divergence.
+    if (springs_torn || step.corrections) workspace_.history.valid = false;
     // A sweep done during the step stands if nothing has moved a particle since, or if what
-    // did checked the particles it moved.
+    // did checked the particles it moved. With tearing on, a runaway spring breaks instead of
+    // stretching without bound, so only non-finite values count as divergence.
     std::optional<ParticleSweep> swept;
-    if (watching)
-        swept = watching->result();
-    else if (corrections == 0 && !held)
-        swept = workspace_.sweep_result;
-    report.divergence = divergence_guard_.check(cloth_, check_runaway_stretch, pool_.get(), swept);
+    if (step.watching)
+        swept = step.watching->result();
+    else if (step.corrections == 0 && !step.held)
+        swept = workspace_.on_the_way.sweep_result;
+    std::optional<std::string> divergence =
+        divergence_guard_.check(cloth_, step.check_runaway_stretch, pool_.get(), swept);
     // With tearing on, an unstable step shreds the cloth rather than diverge (runaway_tearing.h).
-    if (!report.divergence && scene_.tear_max_stretch)
-        report.divergence = tearing_guard_.check(cloth_, torn_, time_, drag_);
-    if (!report.divergence)
-        report.divergence = energy_guard_.check(cloth_, field_, time_, drag_.active(), pool_.get());
-    clock.lap(report.times.guards);
-    return report;
+    if (!divergence && scene_.tear_max_stretch)
+        divergence = tearing_guard_.check(cloth_, torn_, time_, drag_);
+    if (!divergence)
+        divergence = energy_guard_.check(cloth_, field_, time_, drag_.active(), pool_.get());
+    return divergence;
 }
 
 void Simulation::set_integrator(Integrator integrator) {
-    StepFunction function = step_function(integrator);
-    if (!function) throw std::invalid_argument("integrator not available");
+    if (!step_function(integrator)) throw std::invalid_argument("integrator not available");
     integrator_ = integrator;
     scene_.solver.integrator = integrator;  // scene() follows, so reset and saving keep it
-    step_function_ = function;
     workspace_.resize(cloth_.particle_count(), integrator);  // the new method's scratch only
 }
 
 void Simulation::set_dt(double dt) {
     dt_ = dt;
     scene_.solver.dt = dt;
-    workspace_.history_valid = false;
+    workspace_.history.valid = false;
 }
 
 namespace {
@@ -296,7 +326,7 @@ void Simulation::set_spring_material(SpringFamily family, double stiffness, doub
             group.damping = damping;
         }
     }
-    workspace_.history_valid = false;  // the carried accelerations came from the old forces
+    workspace_.history.valid = false;  // the carried accelerations came from the old forces
 }
 
 void Simulation::set_family_enabled(SpringFamily family, bool enabled) {
@@ -305,7 +335,7 @@ void Simulation::set_family_enabled(SpringFamily family, bool enabled) {
     SpringFamilySpec& spec = family_spec(scene_, family);
     if (family == SpringFamily::structural || spec.enabled == enabled) return;
     spec.enabled = enabled;
-    workspace_.history_valid = false;
+    workspace_.history.valid = false;
     if (!enabled) {
         if (auto taken = take_spring_family(cloth_, family))
             switched_off_.push_back(std::move(*taken));
@@ -333,7 +363,7 @@ void Simulation::set_force_field(const Vec3d& gravity, double air_drag, const Ve
     field_.gravity = to_vec3(gravity);
     field_.air_drag = air_drag;
     field_.wind = to_vec3(wind);
-    workspace_.history_valid = false;
+    workspace_.history.valid = false;
 }
 
 void Simulation::set_particle_mass(double mass) {
@@ -344,7 +374,7 @@ void Simulation::set_particle_mass(double mass) {
         topology.masses[p] = mass;
         if (topology.inverse_masses[p] != 0.0) topology.inverse_masses[p] = 1.0 / mass;
     }
-    workspace_.history_valid = false;
+    workspace_.history.valid = false;
 }
 
 void Simulation::set_tear_limit(std::optional<double> max_stretch) {
@@ -409,7 +439,7 @@ void Simulation::set_parameters(const Scene& wanted) {
         scene_.colliders = wanted.colliders;
         scene_.floor_enabled = wanted.floor_enabled;
         build_colliders();
-        workspace_.history_valid = false;
+        workspace_.history.valid = false;
     }
     scene_.camera = wanted.camera;
     scene_.name = wanted.name;
@@ -419,7 +449,7 @@ void Simulation::start_drag(DragHandle drag) {
     drag_ = std::move(drag);
     drag_.last_pull_time = time_;
     // The held particles' velocities change at once: carried history no longer fits them.
-    workspace_.history_valid = false;
+    workspace_.history.valid = false;
 }
 
 void Simulation::move_drag_target(const Vec3& target) {
@@ -428,7 +458,7 @@ void Simulation::move_drag_target(const Vec3& target) {
 
 void Simulation::end_drag() {
     drag_ = DragHandle{};
-    workspace_.history_valid = false;
+    workspace_.history.valid = false;
     // The energy guard measures from where the hand lets go: what the hand put in since its
     // last check is the cloth's now (energy_guard.h).
     energy_guard_.forget();
@@ -437,18 +467,18 @@ void Simulation::end_drag() {
 void Simulation::set_pinned(std::size_t particle, bool pinned) {
     energy_guard_.forget();  // the energy is measured against other terms now
     weft::set_pinned(cloth_, particle, pinned);
-    workspace_.history_valid = false;
+    workspace_.history.valid = false;
 }
 
 void Simulation::release_all_pins() {
     energy_guard_.forget();  // the energy is measured against other terms now
     while (!cloth_.topology().pinned.empty())
         weft::set_pinned(cloth_, cloth_.topology().pinned.back(), false);
-    workspace_.history_valid = false;
+    workspace_.history.valid = false;
 }
 
 Cloth& Simulation::edit_cloth() {
-    workspace_.history_valid = false;
+    workspace_.history.valid = false;
     divergence_guard_.forget();  // the caller may change more than positions
     energy_guard_.forget();
     tearing_guard_.forget();

@@ -51,30 +51,31 @@ class Simulation {
 
     double time() const { return time_; }  // s, simulated
     std::uint64_t steps_taken() const { return steps_taken_; }
-    std::uint64_t force_evaluations() const { return workspace_.force_evaluations; }
+    std::uint64_t force_evaluations() const { return workspace_.statistics.force_evaluations; }
     // How implicit Euler's last conjugate-gradient solve went.
     struct LinearSolve {
         int iterations;
         double relative_residual;  // |A Δv - b| / |b|
     };
     LinearSolve last_linear_solve() const {
-        return {workspace_.implicit_last_iterations, workspace_.implicit_last_relative_residual};
+        return {workspace_.statistics.implicit_iterations,
+                workspace_.statistics.implicit_relative_residual};
     }
 
     // Times the last implicit Euler step was halved (implicit_euler.cpp).
-    int last_step_splits() const { return workspace_.implicit_last_splits; }
+    int last_step_splits() const { return workspace_.statistics.implicit_splits; }
 
     // How the steps compute (simulation_options.h); a kernel build the CPU lacks becomes the
     // best it has.
-    const SimulationOptions& options() const { return workspace_.options; }
+    const SimulationOptions& options() const { return workspace_.settings.options; }
     void set_options(const SimulationOptions& options);
 
     // When implicit Euler's solve stops (implicit_grid_solve.h).
     void set_implicit_solve_settings(const ImplicitSolveSettings& settings) {
-        workspace_.implicit_settings = settings;
+        workspace_.settings.implicit = settings;
     }
     const ImplicitSolveSettings& implicit_solve_settings() const {
-        return workspace_.implicit_settings;
+        return workspace_.settings.implicit;
     }
 
     const Cloth& cloth() const { return cloth_; }
@@ -137,7 +138,7 @@ class Simulation {
     // Removes the springs for which should_cut(spring) is true, with their triangles.
     template <class Predicate>
     std::size_t cut_springs(Predicate should_cut) {
-        workspace_.history_valid = false;
+        workspace_.history.valid = false;
         return remove_springs_if(cloth_, should_cut);
     }
 
@@ -151,12 +152,20 @@ class Simulation {
     // One step with the hand's motion as prescribed; with `judge_grip`, stops right after the
     // integrator and its corrections, reporting hand_slipped, if the grip slipped.
     StepReport take_step(bool judge_grip);
+    // Its phases, in order (simulation.cpp).
+    struct StepInProgress;
+    void begin_step(StepInProgress& step, StepReport& report);  // the hand, wind, the guard's ask
+    void clear_step_field();  // the field lets go of the step's hand and colliders
+    void limit_strain_after_step(StepInProgress& step);
+    std::size_t resolve_contacts(StepInProgress& step);  // with colliders, then self-collision
+    bool hold_in_hand_after_step(StepInProgress& step, bool judge_grip);  // false: it slipped
+    std::size_t tear_after_step();                                        // springs torn
+    std::optional<std::string> check_guards(const StepInProgress& step, std::size_t springs_torn);
 
     Scene scene_;
     Cloth cloth_;
     ForceField field_;
     Integrator integrator_;
-    StepFunction step_function_;
     double dt_;
     IntegratorWorkspace workspace_;
     std::shared_ptr<WorkerPool> pool_;  // shared by copies, which are never stepped at once
@@ -166,7 +175,6 @@ class Simulation {
     std::vector<SpringGroup> switched_off_;  // families switched off, kept with their tears
     bool has_repulsion_ = false;             // any collider with the repulsion response
     std::optional<SelfCollision> self_collision_;
-    std::vector<Vec3> step_start_;             // m: positions before the step, for self-collision
     std::vector<Vec3> grip_start_positions_;   // m, the state before a held implicit step,
     std::vector<Vec3> grip_start_velocities_;  // m/s, for taking it again if the grip slips
     DivergenceGuard divergence_guard_;

@@ -12,7 +12,7 @@ void step_explicit_euler(Cloth& cloth, const ForceField& field, double dt,
     const std::size_t count = cloth.particle_count();
     Vec3* x = cloth.positions.data();
     Vec3* v = cloth.velocities.data();
-    const Vec3* f = work.forces.data();
+    const Vec3* f = work.scratch.forces.data();
     const double* inverse_mass = cloth.topology().inverse_masses.data();
     for_particle_ranges(work, count, [&](std::size_t begin, std::size_t end) {
         for (std::size_t p = begin; p < end; ++p) {

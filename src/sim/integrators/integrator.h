@@ -30,47 +30,83 @@ struct ImplicitSpringTerms {
 inline constexpr double implicit_cg_tolerance = 1e-8;  // relative residual |A Δv - b| / |b|
 inline constexpr int implicit_cg_max_iterations = 500;
 
-// Scratch arrays and the history some methods carry from step to step. Sized once
-// (resize), so no method allocates inside a step.
-struct IntegratorWorkspace {
-    std::vector<Vec3> forces;              // N, output of the last force evaluation
-    std::vector<Vec3> accelerations;       // m/s², a_n carried between steps (Verlet family)
+// How the methods compute: chosen by the caller, read by every step.
+struct IntegratorSettings {
+    WorkerPool* pool = nullptr;      // threads for the force pass (owned by Simulation)
+    SimulationOptions options;       // the kernel build and the paths taken on grids
+    ImplicitSolveSettings implicit;  // when implicit Euler's solve stops
+    bool profiling = false;          // implicit Euler times its phases into the statistics
+};
+
+// What some methods carry from one step to the next.
+struct IntegratorHistory {
+    // False whenever the carried history no longer belongs to the current state and dt: at
+    // the start, after a change of dt or integrator, or after the state was edited (a drag).
+    bool valid = false;
+    std::vector<Vec3> accelerations;       // m/s², a_n (velocity Verlet)
     std::vector<Vec3> previous_positions;  // m, x_{n-1} (position Verlet)
-    std::vector<Vec3> stage_positions;     // m, RK4 stage state; velocity Verlet's prediction
-    std::vector<Vec3> stage_velocities;    // m/s
-    std::vector<Vec3> position_rate_sum;   // m/s, RK4's weighted sum k1 + 2 k2 + 2 k3 + k4
-    std::vector<Vec3> velocity_rate_sum;   // m/s²
+    int implicit_start_depth = 0;          // implicit Euler's next step starts as 2^depth pieces
+};
+
+// Each method's scratch arrays, sized by IntegratorWorkspace::resize for one method only.
+struct IntegratorScratch {
+    std::vector<Vec3> forces;             // N, output of the last force evaluation
+    std::vector<Vec3> stage_positions;    // m, RK4 stage state; velocity Verlet's prediction
+    std::vector<Vec3> stage_velocities;   // m/s
+    std::vector<Vec3> position_rate_sum;  // m/s, RK4's weighted sum k1 + 2 k2 + 2 k3 + k4
+    std::vector<Vec3> velocity_rate_sum;  // m/s²
     // The fused grid step's output, swapped with the cloth's state after each step.
     std::vector<Vec3> next_positions;   // m
     std::vector<Vec3> next_velocities;  // m/s
-    // The divergence guard's sweep, done by a fused step on the way: what the guard asks
-    // for (set by the caller before the step) and what the step found, if it did the sweep.
-    std::optional<SweepRequest> sweep_request;
-    std::optional<ParticleSweep> sweep_result;
-    // False whenever the carried history no longer belongs to the current state and dt: at
-    // the start, after a change of dt or integrator, or after the state was edited (a drag).
+    // Where each particle started a step that was not fused, when the caller asks (sized on
+    // first use).
+    std::vector<Vec3> start_positions;  // m
     // Implicit Euler (allocated on its first step): the solution Δv (kept: the warm start),
-    // right-hand side, CG vectors, per-spring terms and how the last solve went.
+    // right-hand side, CG vectors and per-spring terms of the general path; the structured
+    // solve (implicit_grid_solve.h), used where the cloth is a grid, with its own warm start;
+    // and the start of the step being taken, for a split to go back to.
     std::vector<Vec3> implicit_delta_v, implicit_rhs, implicit_residual, implicit_direction,
         implicit_product;
     std::vector<ImplicitSpringTerms> implicit_springs;
-    // The structured solve (implicit_grid_solve.h), used where the cloth is a grid, and
-    // when both solves stop.
     ImplicitGridSolver implicit_grid;
-    ImplicitSolveSettings implicit_settings;
-    int implicit_last_iterations = 0;  // over all the pieces of a split step
-    int implicit_last_splits = 0;      // times the last step was halved (implicit_euler.cpp)
-    int implicit_start_depth = 0;      // the next step starts as 2^depth pieces (ditto)
-    // When the caller profiles the step: implicit Euler's phases, summed over its pieces.
-    bool profiling = false;
-    ImplicitPhaseTimes implicit_times;
-    // The start of the step being taken, for a split to go back to (sized on first use).
     std::vector<Vec3> implicit_step_start_positions, implicit_step_start_velocities;
-    double implicit_last_relative_residual = 0.0;
-    bool history_valid = false;
+};
+
+// What the steps did, for the caller to report.
+struct IntegratorStatistics {
     std::uint64_t force_evaluations = 0;  // total calls of the force pass, for cost studies
-    WorkerPool* pool = nullptr;           // threads for the force pass (owned by Simulation)
-    SimulationOptions options;            // the kernel build and the paths taken on grids
+    // Implicit Euler's last step: CG iterations over all its pieces, times it was halved
+    // (implicit_euler.cpp), the relative residual of its last solve, and, when profiling,
+    // its phases summed over its pieces.
+    int implicit_iterations = 0;
+    int implicit_splits = 0;
+    double implicit_relative_residual = 0.0;
+    ImplicitPhaseTimes implicit_times;
+};
+
+// Work a fused grid step does on its way (grid_force_pass.h), while the particles are in
+// cache: what the caller asks for before the step, and what the step did.
+struct OnTheWay {
+    // Asked: the divergence guard's sweep of the new state; work on each band of rows as it
+    // is stepped; the positions each particle started from.
+    std::optional<SweepRequest> sweep_request;
+    const RowsSteppedWork* after_rows = nullptr;
+    bool keep_start_positions = false;
+    // Done: the sweep, if the step did it; whether after_rows ran over every particle; the
+    // start positions, if asked (in the fused step's buffer, or copied before the step).
+    std::optional<ParticleSweep> sweep_result;
+    bool rows_done = false;
+    std::span<const Vec3> start_positions;
+};
+
+// Everything the methods read and write besides the cloth, sized once (resize), so no
+// method allocates inside a step.
+struct IntegratorWorkspace {
+    IntegratorSettings settings;
+    IntegratorHistory history;
+    IntegratorScratch scratch;
+    IntegratorStatistics statistics;
+    OnTheWay on_the_way;
 
     // Sizes the arrays `integrator` steps with for `particle_count` particles (zeroed) and
     // frees every other method's, so a workspace, and each copy of it (a snapshot, a run side
@@ -85,13 +121,14 @@ struct IntegratorWorkspace {
 inline constexpr std::size_t min_particles_for_parallel_loops = 4096;
 template <class Body>
 void for_particle_ranges(const IntegratorWorkspace& work, std::size_t count, Body&& body) {
-    if (work.pool && work.pool->thread_count() > 1 && count >= min_particles_for_parallel_loops)
-        work.pool->parallel_for(count, body);
+    WorkerPool* pool = work.settings.pool;
+    if (pool && pool->thread_count() > 1 && count >= min_particles_for_parallel_loops)
+        pool->parallel_for(count, body);
     else if (count > 0)
         body(std::size_t{0}, count);
 }
 
-// Runs the force pass into work.forces and counts it.
+// Runs the force pass into work.scratch.forces and counts it.
 void evaluate_forces(const Cloth& cloth, const ForceField& field, std::span<const Vec3> positions,
                      std::span<const Vec3> velocities, IntegratorWorkspace& work);
 
@@ -103,7 +140,7 @@ void step_explicit_euler(Cloth& cloth, const ForceField& field, double dt,
 void step_symplectic_euler(Cloth& cloth, const ForceField& field, double dt,
                            IntegratorWorkspace& work);
 // The same step when the fused grid pass can take it (grid_force_pass.h); false, touching
-// nothing, when it cannot. After a true, work.next_positions holds the positions the step
+// nothing, when it cannot. After a true, work.scratch.next_positions holds the positions the step
 // started from (the pass's output buffer, swapped with the cloth's): a caller that needs
 // them reads them there instead of copying them first. `after_rows`: work for each thread
 // on the rows it has just stepped (grid_force_pass.h).
@@ -116,6 +153,11 @@ void step_velocity_verlet(Cloth& cloth, const ForceField& field, double dt,
 void step_rk4(Cloth& cloth, const ForceField& field, double dt, IntegratorWorkspace& work);
 void step_implicit_euler(Cloth& cloth, const ForceField& field, double dt,
                          IntegratorWorkspace& work);
+
+// One step of `integrator`, with what work.on_the_way asks done on the way: by the fused grid
+// step where symplectic Euler can take it, else around the method's own step.
+void integrate(Integrator integrator, Cloth& cloth, const ForceField& field, double dt,
+               IntegratorWorkspace& work);
 
 // y = (M + h C + h² K) v for the terms of the last implicit step, the entries of pinned
 // particles and of those in `held` (the hand's) zero.

@@ -11,10 +11,10 @@ void step_rk4(Cloth& cloth, const ForceField& field, double dt, IntegratorWorksp
     const std::size_t count = cloth.particle_count();
     Vec3* x = cloth.positions.data();
     Vec3* v = cloth.velocities.data();
-    Vec3* stage_x = work.stage_positions.data();
-    Vec3* stage_v = work.stage_velocities.data();
-    Vec3* x_rate_sum = work.position_rate_sum.data();
-    Vec3* v_rate_sum = work.velocity_rate_sum.data();
+    Vec3* stage_x = work.scratch.stage_positions.data();
+    Vec3* stage_v = work.scratch.stage_velocities.data();
+    Vec3* x_rate_sum = work.scratch.position_rate_sum.data();
+    Vec3* v_rate_sum = work.scratch.velocity_rate_sum.data();
     const double* inverse_mass = cloth.topology().inverse_masses.data();
 
     // Stage s is evaluated at y_n + stage_offset[s] h k_s; its slope enters with weight[s].
@@ -25,8 +25,9 @@ void step_rk4(Cloth& cloth, const ForceField& field, double dt, IntegratorWorksp
     evaluate_forces(cloth, field, cloth.positions, cloth.velocities, work);
     for (int stage = 0; stage < 4; ++stage) {
         if (stage > 0)
-            evaluate_forces(cloth, field, work.stage_positions, work.stage_velocities, work);
-        const Vec3* f = work.forces.data();
+            evaluate_forces(cloth, field, work.scratch.stage_positions,
+                            work.scratch.stage_velocities, work);
+        const Vec3* f = work.scratch.forces.data();
         const Vec3* k_x = stage == 0 ? v : stage_v;  // dx/dt at this stage
         for_particle_ranges(work, count, [&](std::size_t begin, std::size_t end) {
             for (std::size_t p = begin; p < end; ++p) {

@@ -8,13 +8,14 @@ namespace weft {
 bool step_symplectic_euler_fused(Cloth& cloth, const ForceField& field, double dt,
                                  IntegratorWorkspace& work, const RowsSteppedWork* after_rows) {
     ParticleSweep sweep;
-    if (!work.options.fused_grid_steps ||
-        !step_grid_symplectic_euler(cloth, field, dt, work.next_positions, work.next_velocities,
-                                    work.sweep_request ? &*work.sweep_request : nullptr, &sweep,
-                                    work.pool, work.options.kernel_build, after_rows))
+    if (!work.settings.options.fused_grid_steps ||
+        !step_grid_symplectic_euler(
+            cloth, field, dt, work.scratch.next_positions, work.scratch.next_velocities,
+            work.on_the_way.sweep_request ? &*work.on_the_way.sweep_request : nullptr, &sweep,
+            work.settings.pool, work.settings.options.kernel_build, after_rows))
         return false;
-    ++work.force_evaluations;
-    if (work.sweep_request) work.sweep_result = sweep;
+    ++work.statistics.force_evaluations;
+    if (work.on_the_way.sweep_request) work.on_the_way.sweep_result = sweep;
     return true;
 }
 
@@ -26,7 +27,7 @@ void step_symplectic_euler(Cloth& cloth, const ForceField& field, double dt,
     const std::size_t count = cloth.particle_count();
     Vec3* x = cloth.positions.data();
     Vec3* v = cloth.velocities.data();
-    const Vec3* f = work.forces.data();
+    const Vec3* f = work.scratch.forces.data();
     const double* inverse_mass = cloth.topology().inverse_masses.data();
     for_particle_ranges(work, count, [&](std::size_t begin, std::size_t end) {
         for (std::size_t p = begin; p < end; ++p) {

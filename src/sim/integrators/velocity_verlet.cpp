@@ -20,15 +20,15 @@ void step_velocity_verlet(Cloth& cloth, const ForceField& field, double dt,
     const std::size_t count = cloth.particle_count();
     Vec3* x = cloth.positions.data();
     Vec3* v = cloth.velocities.data();
-    Vec3* a = work.accelerations.data();
-    Vec3* v_predicted = work.stage_velocities.data();
+    Vec3* a = work.history.accelerations.data();
+    Vec3* v_predicted = work.scratch.stage_velocities.data();
     const double* inverse_mass = cloth.topology().inverse_masses.data();
     const double half_dt = 0.5 * dt;
 
-    if (!work.history_valid) {
+    if (!work.history.valid) {
         evaluate_forces(cloth, field, cloth.positions, cloth.velocities, work);
-        for (std::size_t p = 0; p < count; ++p) a[p] = inverse_mass[p] * work.forces[p];
-        work.history_valid = true;
+        for (std::size_t p = 0; p < count; ++p) a[p] = inverse_mass[p] * work.scratch.forces[p];
+        work.history.valid = true;
     }
     for_particle_ranges(work, count, [&](std::size_t begin, std::size_t end) {
         for (std::size_t p = begin; p < end; ++p) {
@@ -37,8 +37,8 @@ void step_velocity_verlet(Cloth& cloth, const ForceField& field, double dt,
             v_predicted[p] = v[p] + half_dt * a[p];
         }
     });
-    evaluate_forces(cloth, field, cloth.positions, work.stage_velocities, work);
-    const Vec3* f = work.forces.data();
+    evaluate_forces(cloth, field, cloth.positions, work.scratch.stage_velocities, work);
+    const Vec3* f = work.scratch.forces.data();
     for_particle_ranges(work, count, [&](std::size_t begin, std::size_t end) {
         for (std::size_t p = begin; p < end; ++p) {
             a[p] = inverse_mass[p] * f[p];

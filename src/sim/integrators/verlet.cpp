@@ -18,16 +18,16 @@ void step_verlet(Cloth& cloth, const ForceField& field, double dt, IntegratorWor
     const std::size_t count = cloth.particle_count();
     Vec3* x = cloth.positions.data();
     Vec3* v = cloth.velocities.data();
-    Vec3* x_previous = work.previous_positions.data();
+    Vec3* x_previous = work.history.previous_positions.data();
     const double* inverse_mass = cloth.topology().inverse_masses.data();
 
     evaluate_forces(cloth, field, cloth.positions, cloth.velocities, work);
-    const Vec3* f = work.forces.data();
-    if (!work.history_valid) {
+    const Vec3* f = work.scratch.forces.data();
+    if (!work.history.valid) {
         // Taylor start: x_{-1} = x_0 - h v_0 + ½ h² a_0.
         for (std::size_t p = 0; p < count; ++p)
             x_previous[p] = x[p] - dt * v[p] + (0.5 * dt * dt * inverse_mass[p]) * f[p];
-        work.history_valid = true;
+        work.history.valid = true;
     }
     const double dt_squared = dt * dt;
     const double inverse_two_dt = 1.0 / (2.0 * dt);

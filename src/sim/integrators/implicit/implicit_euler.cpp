@@ -46,7 +46,7 @@ void multiply_implicit_system(const Cloth& cloth, const IntegratorWorkspace& wor
     std::size_t s = 0;
     for (const SpringGroup& group : cloth.topology().spring_groups) {
         for (const Spring& spring : group.springs) {
-            const ImplicitSpringTerms& terms = work.implicit_springs[s++];
+            const ImplicitSpringTerms& terms = work.scratch.implicit_springs[s++];
             // (h² K + h C) applied to the relative vector of the two ends.
             const Vec3 relative = vector[spring.i] - vector[spring.j];
             const Vec3 block =
@@ -127,39 +127,40 @@ double largest_linearisation_error(const Cloth& cloth, std::span<const Vec3> sta
 // Returns the depth of the finest piece taken.
 int step_or_split(Cloth& cloth, const ForceField& field, double dt, IntegratorWorkspace& work,
                   int depth) {
-    const ImplicitSolveSettings& settings = work.implicit_settings;
+    const ImplicitSolveSettings& settings = work.settings.implicit;
     const bool may_split = depth < settings.max_split_depth && settings.split_stretch_ratio > 1.0;
-    PhaseClock clock(work.profiling);
+    PhaseClock clock(work.settings.profiling);
     double timed_inside = 0.0;  // the linearised step times its own phases
     if (may_split) {
-        work.implicit_step_start_positions.resize(cloth.particle_count());
-        work.implicit_step_start_velocities.resize(cloth.particle_count());
+        work.scratch.implicit_step_start_positions.resize(cloth.particle_count());
+        work.scratch.implicit_step_start_velocities.resize(cloth.particle_count());
         for_particle_ranges(work, cloth.particle_count(), [&](std::size_t begin, std::size_t end) {
             std::copy(cloth.positions.begin() + begin, cloth.positions.begin() + end,
-                      work.implicit_step_start_positions.begin() + begin);
+                      work.scratch.implicit_step_start_positions.begin() + begin);
             std::copy(cloth.velocities.begin() + begin, cloth.velocities.begin() + end,
-                      work.implicit_step_start_velocities.begin() + begin);
+                      work.scratch.implicit_step_start_velocities.begin() + begin);
         });
     }
-    clock.lap(work.implicit_times.split_checks);
-    const int iterations_before = work.implicit_last_iterations;
+    clock.lap(work.statistics.implicit_times.split_checks);
+    const int iterations_before = work.statistics.implicit_iterations;
     take_linearised_step(cloth, field, dt, work);
-    work.implicit_last_iterations += iterations_before;
+    work.statistics.implicit_iterations += iterations_before;
     clock.lap(timed_inside);
-    const bool kept = !may_split ||
-                      !some_spring_longer_than(cloth, settings.split_stretch_ratio, work.pool,
-                                               work.options.kernel_build) ||
-                      !(largest_linearisation_error(cloth, work.implicit_step_start_positions,
-                                                    settings.split_stretch_ratio,
-                                                    work.pool) > settings.split_force_error);
-    clock.lap(work.implicit_times.split_checks);
+    const bool kept =
+        !may_split ||
+        !some_spring_longer_than(cloth, settings.split_stretch_ratio, work.settings.pool,
+                                 work.settings.options.kernel_build) ||
+        !(largest_linearisation_error(cloth, work.scratch.implicit_step_start_positions,
+                                      settings.split_stretch_ratio,
+                                      work.settings.pool) > settings.split_force_error);
+    clock.lap(work.statistics.implicit_times.split_checks);
     if (kept) return depth;
-    ++work.implicit_last_splits;
-    std::copy(work.implicit_step_start_positions.begin(), work.implicit_step_start_positions.end(),
-              cloth.positions.begin());
-    std::copy(work.implicit_step_start_velocities.begin(),
-              work.implicit_step_start_velocities.end(), cloth.velocities.begin());
-    clock.lap(work.implicit_times.split_checks);
+    ++work.statistics.implicit_splits;
+    std::copy(work.scratch.implicit_step_start_positions.begin(),
+              work.scratch.implicit_step_start_positions.end(), cloth.positions.begin());
+    std::copy(work.scratch.implicit_step_start_velocities.begin(),
+              work.scratch.implicit_step_start_velocities.end(), cloth.velocities.begin());
+    clock.lap(work.statistics.implicit_times.split_checks);
     const int first = step_or_split(cloth, field, 0.5 * dt, work, depth + 1);
     return std::max(first, step_or_split(cloth, field, 0.5 * dt, work, depth + 1));
 }
@@ -168,38 +169,43 @@ int step_or_split(Cloth& cloth, const ForceField& field, double dt, IntegratorWo
 
 void step_implicit_euler(Cloth& cloth, const ForceField& field, double dt,
                          IntegratorWorkspace& work) {
-    work.implicit_last_iterations = 0;
-    work.implicit_last_splits = 0;
+    work.statistics.implicit_iterations = 0;
+    work.statistics.implicit_splits = 0;
     // A step-size controller's memory: a step that had to be split is followed by one that
     // starts one level coarser than its finest piece, not by a whole step that would most
     // likely fail again and be thrown away. Each step that needs no split of its own takes
     // the next one level closer to a whole step.
-    const int start = std::min(work.implicit_start_depth, work.implicit_settings.max_split_depth);
+    const int start =
+        std::min(work.history.implicit_start_depth, work.settings.implicit.max_split_depth);
     const int pieces = 1 << start;
     int finest = start;
     for (int piece = 0; piece < pieces; ++piece)
         finest = std::max(finest, step_or_split(cloth, field, dt / pieces, work, start));
-    work.implicit_start_depth = std::max(0, finest - 1);
+    work.history.implicit_start_depth = std::max(0, finest - 1);
 }
 
 namespace {
 
 void take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
                           IntegratorWorkspace& work) {
-    if (work.options.structured_implicit_solve &&
-        step_implicit_euler_grid(cloth, field, dt, work.implicit_settings, work.implicit_grid,
-                                 work.pool, work.options.kernel_build,
-                                 work.profiling ? &work.implicit_times : nullptr)) {
-        ++work.force_evaluations;
-        work.implicit_last_iterations = work.implicit_grid.last_iterations;
-        work.implicit_last_relative_residual = work.implicit_grid.last_relative_residual;
+    if (work.settings.options.structured_implicit_solve &&
+        step_implicit_euler_grid(
+            cloth, field, dt, work.settings.implicit, work.scratch.implicit_grid,
+            work.settings.pool, work.settings.options.kernel_build,
+            work.settings.profiling ? &work.statistics.implicit_times : nullptr)) {
+        ++work.statistics.force_evaluations;
+        work.statistics.implicit_iterations = work.scratch.implicit_grid.last_iterations;
+        work.statistics.implicit_relative_residual =
+            work.scratch.implicit_grid.last_relative_residual;
         return;
     }
     const std::size_t count = cloth.particle_count();
-    work.implicit_springs.resize(cloth.spring_count());  // shrinks with tearing, never grows
-    if (work.implicit_delta_v.size() != count) {
-        for (auto* array : {&work.implicit_delta_v, &work.implicit_rhs, &work.implicit_residual,
-                            &work.implicit_direction, &work.implicit_product})
+    work.scratch.implicit_springs.resize(
+        cloth.spring_count());  // shrinks with tearing, never grows
+    if (work.scratch.implicit_delta_v.size() != count) {
+        for (auto* array : {&work.scratch.implicit_delta_v, &work.scratch.implicit_rhs,
+                            &work.scratch.implicit_residual, &work.scratch.implicit_direction,
+                            &work.scratch.implicit_product})
             array->assign(count, Vec3(0.0));
     }
     evaluate_forces(cloth, field, cloth.positions, cloth.velocities, work);
@@ -210,7 +216,7 @@ void take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
         for (const Spring& spring : group.springs) {
             const Vec3 d = cloth.positions[spring.j] - cloth.positions[spring.i];
             const double length = glm::length(d);
-            ImplicitSpringTerms& terms = work.implicit_springs[s++];
+            ImplicitSpringTerms& terms = work.scratch.implicit_springs[s++];
             if (length <= 0.0) {
                 terms = {Vec3(0.0), 0.0, 0.0};
                 continue;
@@ -223,12 +229,12 @@ void take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
         }
     }
     // b = h f0 - h² K v0: K v0 is the stiffness part of the same per-spring blocks.
-    std::span<Vec3> b = work.implicit_rhs;
-    for (std::size_t p = 0; p < count; ++p) b[p] = dt * work.forces[p];
+    std::span<Vec3> b = work.scratch.implicit_rhs;
+    for (std::size_t p = 0; p < count; ++p) b[p] = dt * work.scratch.forces[p];
     s = 0;
     for (const SpringGroup& group : cloth.topology().spring_groups) {
         for (const Spring& spring : group.springs) {
-            const ImplicitSpringTerms& terms = work.implicit_springs[s++];
+            const ImplicitSpringTerms& terms = work.scratch.implicit_springs[s++];
             const Vec3 relative = cloth.velocities[spring.i] - cloth.velocities[spring.j];
             const double stiffness_along =
                 terms.along - dt * group.damping;  // h² k·(u uᵀ) part only
@@ -245,8 +251,8 @@ void take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
     for (std::uint32_t p : field.held) b[p] = Vec3(0.0);
 
     // Conjugate gradient from the warm start.
-    std::span<Vec3> x = work.implicit_delta_v, r = work.implicit_residual,
-                    d = work.implicit_direction, q = work.implicit_product;
+    std::span<Vec3> x = work.scratch.implicit_delta_v, r = work.scratch.implicit_residual,
+                    d = work.scratch.implicit_direction, q = work.scratch.implicit_product;
     for (std::uint32_t p : cloth.topology().pinned) x[p] = Vec3(0.0);
     for (std::uint32_t p : field.held) x[p] = Vec3(0.0);
     multiply_implicit_system(cloth, work, field.air_drag, dt, x, q, field.held);
@@ -267,8 +273,8 @@ void take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
         for (std::size_t p = 0; p < count; ++p) d[p] = r[p] + beta * d[p];
         ++iteration;
     }
-    work.implicit_last_iterations = iteration;
-    work.implicit_last_relative_residual = b_norm > 0.0 ? std::sqrt(r_squared) / b_norm : 0.0;
+    work.statistics.implicit_iterations = iteration;
+    work.statistics.implicit_relative_residual = b_norm > 0.0 ? std::sqrt(r_squared) / b_norm : 0.0;
 
     for (std::size_t p = 0; p < count; ++p) {
         cloth.velocities[p] += x[p];

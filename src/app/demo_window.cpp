@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <glm/geometric.hpp>
@@ -30,6 +31,7 @@
 #include "app/state_dump.h"
 #include "app/status_overlay.h"
 #include "app/status_text.h"
+#include "app/window_state_file.h"
 #include "raster/png_writer.h"
 #include "sim/core/energy.h"
 
@@ -544,6 +546,8 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
     };
     std::size_t measured_on = 0;
     double other_seconds = 0.0;  // the last frame's work besides stepping (drawing, panel)
+    // What a script driving the window waits on (window_state_file.h).
+    const char* state_file = std::getenv("WEFT_WINDOW_STATE");
     bool running = true;
     while (running) {
         w.layout = layout_of(w);
@@ -621,6 +625,10 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
             w.save_window_next_frame = false;
         }
         SDL_RenderPresent(w.renderer);
+        if (state_file && !write_window_state(state_file, frames, state)) {
+            std::fprintf(stderr, "error: %s: cannot write the window's state\n", state_file);
+            state_file = nullptr;
+        }
         other_seconds = now_seconds() - now - sim_seconds;
         // Wait out the rest of the refresh period, in whole milliseconds and a little short
         // (the step clock measures what the frame really took). The software renderer does

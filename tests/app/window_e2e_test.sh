@@ -48,6 +48,35 @@ failures=0
 passes=0
 check() { if "$@"; then passes=$((passes + 1)); else echo "FAIL: $*"; failures=$((failures + 1)); fi; }
 
+# The test waits on the window's state, not on the clock: weft rewrites WEFT_WINDOW_STATE
+# after every frame it draws (src/app/window_state_file.h), and these poll it.
+window_value() { awk -v key="$1" '$1 == key { print $2 }' "$work/$weft_name/window_state" 2>/dev/null; }
+# wait_frames N: until the window has drawn N more frames. A frame handles every event sent
+# before it began, so two frames after an input the window has answered it and drawn the
+# answer.
+wait_frames() {
+  local now target
+  now=$(window_value frames)
+  target=$((${now:-0} + $1))
+  for _ in $(seq 1200); do
+    now=$(window_value frames)
+    [ "${now:-0}" -ge "$target" ] && return 0
+    sleep 0.05
+  done
+  echo "FAIL: the window drew no $1 frames in 60 s"; failures=$((failures + 1)); return 1
+}
+# wait_sim_seconds S: until the main run's simulated time has gone on S seconds.
+wait_sim_seconds() {
+  local start now
+  start=$(window_value time)
+  for _ in $(seq 1200); do
+    now=$(window_value time)
+    awk -v a="${start:-0}" -v b="${now:-0}" -v s="$1" 'BEGIN { exit !(b - a >= s) }' && return 0
+    sleep 0.05
+  done
+  echo "FAIL: the window's run did not go on $1 s in 60 s"; failures=$((failures + 1)); return 1
+}
+
 # Starts weft in $work/$1 (further arguments go to weft), its captures folder (screenshots,
 # sessions, frames) $work/$1/captures, waits for its window; sets $weft_pid, $weft_name and
 # $window.
@@ -56,11 +85,16 @@ start_weft() {
   weft_name=$name
   shift
   mkdir -p "$work/$name"
-  (cd "$work/$name" && WEFT_CAPTURES="$work/$name/captures" exec "$weft" "$scene" --size 800x600 --dump "$work/$name/state.csv" "$@" >"$work/$name/out.log" 2>&1) &
+  (cd "$work/$name" && WEFT_CAPTURES="$work/$name/captures" WEFT_WINDOW_STATE="$work/$name/window_state" exec "$weft" "$scene" --size 800x600 --dump "$work/$name/state.csv" "$@" >"$work/$name/out.log" 2>&1) &
   weft_pid=$!
   window=$(timeout 20 xdotool search --sync --name "weft - e2e sheet" | head -1)
   [ -n "$window" ] || { echo "FAIL: no weft window appeared"; cat "$work/$name/out.log"; exit 1; }
-  sleep 2.5  # the sheet settles
+  # The sheet settles: 2.5 s of simulated time, or the run has paused (parameters no step can
+  # hold pause it, saying why).
+  for _ in $(seq 1200); do
+    awk -v t="$(window_value time)" -v p="$(window_value paused)" 'BEGIN { exit !(t >= 2.5 || p == 1) }' && break
+    sleep 0.05
+  done
 }
 # Quits with Escape; weft must exit with status 0 (under ASan: no leak, no error at exit).
 quit_weft() {
@@ -82,18 +116,18 @@ particle_x() { awk -F, -v r="$2" -v c="$3" 'NR > 1 && $1 == r && $2 == c { print
 # --- 1. an undisturbed run, and the camera keys ---------------------------------------------
 start_weft rest
 xdotool key --window "$window" F12
-sleep 0.5
+wait_frames 3
 # The wheel turned as the cursor arrives over the panel scrolls the panel only: the view is
 # as it was (the first wheel over the panel of a fresh window used to zoom the view too).
 xdotool mousemove --window "$window" 150 300 click 5 click 5 click 5
-sleep 0.5
+wait_frames 3
 xdotool key --window "$window" F12
-sleep 0.5
-xdotool keydown --window "$window" w; sleep 0.6; xdotool keyup --window "$window" w
-xdotool keydown --window "$window" Left; sleep 0.4; xdotool keyup --window "$window" Left
-sleep 0.3
+wait_frames 3
+xdotool keydown --window "$window" w; wait_frames 30; xdotool keyup --window "$window" w
+xdotool keydown --window "$window" Left; wait_frames 20; xdotool keyup --window "$window" Left
+wait_frames 3
 xdotool key --window "$window" F12
-sleep 0.5
+wait_frames 3
 xdotool key --window "$window" c      # back to the scene's camera before quitting
 quit_weft
 shots=("$work"/rest/captures/weft-screenshot-*.png)
@@ -111,10 +145,10 @@ check test -s "$work/rest/state.csv"
 # right.
 start_weft drag
 xdotool mousemove --window "$window" 540 390
-sleep 0.2
+wait_frames 2
 xdotool keydown --window "$window" space
-for step in $(seq 1 10); do xdotool mousemove --window "$window" $((540 + 20 * step)) 390; sleep 0.05; done
-sleep 1.0
+for step in $(seq 1 10); do xdotool mousemove --window "$window" $((540 + 20 * step)) 390; wait_frames 2; done
+wait_sim_seconds 1.0
 quit_weft   # still holding: the dump shows the cloth where the hand holds it
 xdotool keyup space
 rest_x=$(particle_x "$work/rest/state.csv" 12 7)
@@ -126,10 +160,10 @@ check awk -v a="$rest_x" -v b="$drag_x" 'BEGIN { exit !(b - a > 0.15) }'
 # The sheet spans x = 399 to 701: x = 760 is right of it.
 start_weft miss
 xdotool mousemove --window "$window" 760 120
-sleep 0.2
+wait_frames 2
 xdotool keydown --window "$window" space
-for step in $(seq 1 10); do xdotool mousemove --window "$window" 760 $((120 + 30 * step)); sleep 0.05; done
-sleep 0.5
+for step in $(seq 1 10); do xdotool mousemove --window "$window" 760 $((120 + 30 * step)); wait_frames 2; done
+wait_sim_seconds 0.5
 xdotool keyup --window "$window" space
 quit_weft
 largest=$(paste -d, <(tail -n +2 "$work/rest/state.csv") <(tail -n +2 "$work/miss/state.csv") |
@@ -144,16 +178,16 @@ check awk -v d="$largest" 'BEGIN { exit !(d < 0.002) }'
 # 250 px of its sheet. The drag starts on the right copy.
 start_weft side --compare rk4 --record "$work/side/session.toml"
 xdotool key --window "$window" F12
-sleep 0.5
+wait_frames 3
 xdotool mousemove --window "$window" 665 380
-sleep 0.2
+wait_frames 2
 xdotool keydown --window "$window" space
-for step in $(seq 1 10); do xdotool mousemove --window "$window" $((665 + 10 * step)) 380; sleep 0.05; done
-sleep 0.8
+for step in $(seq 1 10); do xdotool mousemove --window "$window" $((665 + 10 * step)) 380; wait_frames 2; done
+wait_sim_seconds 0.8
 xdotool key --window "$window" F12
-sleep 0.5
+wait_frames 3
 xdotool keyup --window "$window" space
-sleep 0.5
+wait_frames 3
 quit_weft
 shots=("$work"/side/captures/weft-screenshot-*.png)
 check test "${#shots[@]}" -eq 2
@@ -180,14 +214,14 @@ check cmp -s "$work/side/state.csv" "$work/side/replayed.csv"
 start_weft implicit --set solver.integrator=implicit-euler --set solver.dt=0.016666666666666666 \
   --set springs.bend.enabled=true
 xdotool mousemove --window "$window" 419 172
-sleep 0.2
+wait_frames 2
 xdotool keydown --window "$window" space
 for round in 1 2 3; do
-  for step in $(seq 1 8); do xdotool mousemove --window "$window" $((419 + 45 * step)) $((172 + 50 * step)); sleep 0.03; done
-  for step in $(seq 1 8); do xdotool mousemove --window "$window" $((779 - 55 * step)) $((572 - 70 * step)); sleep 0.03; done
+  for step in $(seq 1 8); do xdotool mousemove --window "$window" $((419 + 45 * step)) $((172 + 50 * step)); wait_frames 1; done
+  for step in $(seq 1 8); do xdotool mousemove --window "$window" $((779 - 55 * step)) $((572 - 70 * step)); wait_frames 1; done
 done
 xdotool mousemove --window "$window" 700 550
-sleep 1.0
+wait_sim_seconds 1.0
 quit_weft   # still holding, far from the pins
 xdotool keyup space
 implicit_rest_x=$(particle_x "$work/rest/state.csv" 1 1)
@@ -208,7 +242,7 @@ recording_red="255 64 64"
 # run in $work/NAME; the image's path in $window_shot.
 shoot_window() {
   xdotool key --window "$window" shift+F12
-  sleep 0.5
+  wait_frames 3
   window_shot=$(ls "$work/$1"/captures/weft-screenshot-*.png | tail -1)
 }
 # pixels IMAGE "R G B" X0 X1: pixels of that colour in those columns of rows 480 to 600.
@@ -217,7 +251,7 @@ pixels() { "$png_colour_count" "$1" $2 "$3" "$4" 480 600; }
 # A screenshot (F12) is news of success: green, not the problem colour.
 start_weft say
 xdotool key --window "$window" F12
-sleep 0.3
+wait_frames 2
 shoot_window say
 quit_weft
 saved_green=$(pixels "$window_shot" "$success_green" $panel_right 800)
@@ -266,7 +300,7 @@ for size in 800x600:300 1280x720:384; do
   name=fit-${size%%:*}
   start_weft "$name" --size "${size%%:*}"
   xdotool key --window "$window" F12
-  sleep 0.5
+  wait_frames 3
   view_shot=$(ls "$work/$name"/captures/weft-screenshot-*.png | tail -1)
   shoot_window "$name"
   quit_weft
@@ -286,29 +320,33 @@ done
 refusal_red="255 102 102"
 # type_into_slider X Y TEXT: Ctrl+click at (X, Y) and type TEXT, through the X server's own
 # input (the slider ignores clicks sent to the window alone). Each key and button is held
-# for 0.1 s: Dear ImGui 1.86 reads keys and buttons once a frame, and one pressed and let go
-# within a frame is lost.
-hold() { xdotool "$1"down "$2"; sleep 0.1; xdotool "$1"up "$2"; sleep 0.1; }
+# for two frames: Dear ImGui 1.86 reads keys and buttons once a frame, and one pressed and let
+# go within a frame is lost. Text goes a character every two frames.
+hold() { xdotool "$1"down "$2"; wait_frames 2; xdotool "$1"up "$2"; wait_frames 2; }
+type_text() {
+  local i
+  for ((i = 0; i < ${#1}; i++)); do xdotool type -- "${1:i:1}"; wait_frames 2; done
+}
 type_into_slider() {
   xdotool windowfocus --sync "$window"
   xdotool mousemove --window "$window" "$1" "$2"
-  sleep 0.2
+  wait_frames 2
   xdotool keydown ctrl
-  sleep 0.1
+  wait_frames 2
   hold mouse 1
   xdotool keyup ctrl
-  sleep 0.3
+  wait_frames 3
   hold key ctrl+a   # the slider's text is selected already; this makes sure
-  xdotool type --delay 100 -- "$3"
+  type_text "$3"
   hold key Return
-  sleep 0.5
+  wait_frames 3
 }
 refusal_pixels() { "$png_colour_count" "$window_shot" $refusal_red "$1" "$2" 438 478; }
 click_at() {
   xdotool mousemove --window "$window" "$1" "$2"
-  sleep 0.2
+  wait_frames 2
   hold mouse 1
-  sleep 0.3
+  wait_frames 3
 }
 start_weft refuse
 xdotool windowfocus --sync "$window"
@@ -317,7 +355,7 @@ type_into_slider 60 430 -5
 shoot_window refuse
 under_slider=$(refusal_pixels 0 $panel_right)
 beyond_panel=$(refusal_pixels $panel_right 800)
-sleep 3
+wait_frames 180   # 3 s or more: frames come at most at the display's 60 Hz
 shoot_window refuse
 later=$(refusal_pixels 0 $panel_right)
 type_into_slider 60 430 700
@@ -340,7 +378,7 @@ shoot_window refuse; running_a=$window_shot
 shoot_window refuse; running_b=$window_shot
 click_at 42 50   # pause (P)
 shoot_window refuse; paused_a=$window_shot
-sleep 0.5
+wait_frames 30
 shoot_window refuse; paused_b=$window_shot
 click_at 117 50  # step (N)
 shoot_window refuse; stepped=$window_shot
@@ -348,7 +386,7 @@ quit_weft
 running=$(plots_changed "$running_a" "$running_b")
 paused=$(plots_changed "$paused_a" "$paused_b")
 one_step=$(plots_changed "$paused_b" "$stepped")
-echo "plots: $running of their pixels changed over 0.5 s running, $paused over 1 s paused, $one_step for one step"
+echo "plots: $running of their pixels changed between two shots running, $paused over 30 frames paused, $one_step for one step"
 check awk -v f="$running" 'BEGIN { exit !(f > 0.01) }'
 check awk -v f="$paused" 'BEGIN { exit !(f == 0) }'
 check awk -v f="$one_step" 'BEGIN { exit !(f > 0.001) }'
@@ -364,13 +402,13 @@ check awk -v f="$one_step" 'BEGIN { exit !(f > 0.001) }'
 # particles.
 type_into_field() {
   xdotool mousemove --window "$window" "$1" "$2"
-  sleep 0.2
+  wait_frames 2
   hold mouse 1
-  sleep 0.2
+  wait_frames 2
   hold key ctrl+a
-  xdotool type --delay 100 -- "$3"
+  type_text "$3"
   hold key Return
-  sleep 0.4
+  wait_frames 3
 }
 start_weft grid
 xdotool windowfocus --sync "$window"
@@ -380,7 +418,7 @@ type_into_field 50 373 2048
 type_into_field 50 396 2048
 click_at 100 558   # apply
 xdotool mousemove --window "$window" 550 300
-sleep 0.3
+wait_frames 3
 shots_before=$(ls "$work/grid"/captures/weft-screenshot-*.png 2>/dev/null | wc -l)
 shoot_window grid
 shots_after=$(ls "$work/grid"/captures/weft-screenshot-*.png | wc -l)
@@ -403,26 +441,26 @@ start_weft hint
 shoot_window hint
 hint_before=$(hint_pixels)
 xdotool key --window "$window" F9
-sleep 1.5
+wait_sim_seconds 0.5
 xdotool key --window "$window" F9
 xdotool mousemove --window "$window" 540 390
-sleep 0.2
+wait_frames 2
 xdotool keydown --window "$window" space
-for step in $(seq 1 5); do xdotool mousemove --window "$window" $((540 + 20 * step)) 390; sleep 0.05; done
+for step in $(seq 1 5); do xdotool mousemove --window "$window" $((540 + 20 * step)) 390; wait_frames 2; done
 xdotool keyup --window "$window" space
-sleep 0.5
+wait_frames 3
 shoot_window hint
 hint_after=$(hint_pixels)
 quit_weft
 frames=("$work"/hint/captures/weft-frames-0001/frame-*.png)
 in_working_folders=$(ls "$work"/*/*.png 2>/dev/null | wc -l)
-echo "hint: $hint_before white pixels before the first pull, $hint_after after; F9 for 1.5 s: ${#frames[@]} frames, $(png_width "${frames[0]}") px wide; $in_working_folders PNG files in the working folders"
+echo "hint: $hint_before white pixels before the first pull, $hint_after after; F9 for 0.5 s of simulated time: ${#frames[@]} frames, $(png_width "${frames[0]}") px wide; $in_working_folders PNG files in the working folders"
 check test "$hint_before" -gt 200
 check test "$hint_after" -eq 0
-# How many frames 1.5 s gives depends on how fast the window steps: the test asks only that
-# the capture ran (two frames or more) and numbered its frames without a gap from 0.
+# Half a second of simulated time between the two F9s, less the frames before the first was
+# handled: 12 frames or more at 30 a simulated second, numbered without a gap from 0.
 last_frame=$(printf '%s/hint/captures/weft-frames-0001/frame-%05d.png' "$work" $((${#frames[@]} - 1)))
-check test "${#frames[@]}" -ge 2
+check test "${#frames[@]}" -ge 12
 check test -e "$last_frame"
 check test "$(png_width "${frames[0]}")" -eq 500
 check test "$in_working_folders" -eq 0

@@ -73,29 +73,29 @@ int run_replay_study(const ReplayOptions& options) {
         std::fflush(stdout);
         const SceneLoadResult scene = load_scene_text(run.scene_toml, "replayed scene");
         app::DemoState state(options.session_path, {}, *scene.scene);
-        state.recovery.profiling = true;
+        state.main_run().recovery.profiling = true;
         state.start_replay(run);
         const double seconds = seconds_of([&] {
             while (!state.replay_finished() && !stop_requested) state.step(4096);
         });
         const bool matches = state.replay_matches();
-        const StepProfile& profile = state.recovery.profile;
+        const StepProfile& profile = state.main_run().recovery.profile;
         const double energy =
-            measure_energy(state.simulation.cloth(), state.simulation.force_field()).total();
-        const double stretch = largest_stretch_ratio(state.simulation.cloth());
+            measure_energy(state.simulation().cloth(), state.simulation().force_field()).total();
+        const double stretch = largest_stretch_ratio(state.simulation().cloth());
         std::printf(
             "%s%s, ends at dt %.3g ms, energy %.4g J, largest stretch %.3f, "
             "%.3g s CPU\n",
             integrator == recorded ? (matches ? "(recorded: reproduced bit for bit) "
                                               : "(recorded: DIFFERS from the recording) ")
                                    : "",
-            app::counted(state.recovery.recoveries, "recovery", "recoveries").c_str(),
-            state.simulation.dt() * 1e3, energy, stretch, seconds);
+            app::counted(state.main_run().recovery.recoveries, "recovery", "recoveries").c_str(),
+            state.simulation().dt() * 1e3, energy, stretch, seconds);
         csv.write_row({integrator_name(integrator),
                        integrator == recorded ? "yes" : "no",
                        integrator == recorded ? (matches ? "yes" : "no") : "",
-                       std::to_string(state.recovery.recoveries),
-                       cell(state.simulation.dt()),
+                       std::to_string(state.main_run().recovery.recoveries),
+                       cell(state.simulation().dt()),
                        cell(energy),
                        cell(stretch),
                        cell(seconds),

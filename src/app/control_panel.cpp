@@ -84,7 +84,7 @@ bool integrator_combo(int& current, const char* label = "integrator") {
 }
 
 void solver(DemoState& state) {
-    const Simulation& sim = state.simulation;
+    const Simulation& sim = state.simulation();
     int current = static_cast<int>(sim.integrator());
     if (integrator_combo(current))
         edit(state, {SceneKey::integrator, static_cast<Integrator>(current)});
@@ -108,14 +108,14 @@ void solver(DemoState& state) {
 void materials(DemoState& state) {
     for (SpringFamily family :
          {SpringFamily::structural, SpringFamily::shear, SpringFamily::bend}) {
-        const Scene& scene = state.simulation.scene();
+        const Scene& scene = state.simulation().scene();
         const SpringFamilySpec& spec = family == SpringFamily::structural ? scene.structural
                                        : family == SpringFamily::shear    ? scene.shear
                                                                           : scene.bend;
         const std::string key = std::string("springs.") + spring_family_name(family);
         const auto index = static_cast<std::size_t>(family);  // spring_family_names' order
         ImGui::PushID(static_cast<int>(family));
-        const SpringGroup* group = state.simulation.cloth().find_group(family);
+        const SpringGroup* group = state.simulation().cloth().find_group(family);
         const std::size_t count = group ? group->springs.size() : 0;
         if (family == SpringFamily::structural) {
             ImGui::Text("%s springs (%zu)", spring_family_name(family), count);
@@ -137,7 +137,7 @@ void materials(DemoState& state) {
         refusal_below(key + ".damping");
         ImGui::PopID();
     }
-    const ClothSpec& cloth = state.simulation.scene().cloth;
+    const ClothSpec& cloth = state.simulation().scene().cloth;
     if (!cloth.mesh.empty() && !cloth.mesh_particle_mass) {
         // A mesh's masses are lumped from its triangles' areas: its material has a density.
         double density = cloth.density;  // kg/m²
@@ -160,7 +160,7 @@ void optional_feature(DemoState& state, const char* label, SceneKey key,
                       const char* suffix) {
     const std::string path(scene_key_name(key));
     ImGui::PushID(path.c_str());
-    const std::optional<double>& value = state.simulation.scene().*member;
+    const std::optional<double>& value = state.simulation().scene().*member;
     bool on = value.has_value();
     double v = value.value_or(shown);
     if (ImGui::Checkbox(label, &on))
@@ -224,10 +224,10 @@ void comparison(DemoState& state) {
     integrator_combo(new_integrator, "##new");
     ImGui::SameLine();
     if (ImGui::Button("add a copy beside"))
-        state.add_companion(static_cast<Integrator>(new_integrator), state.simulation.dt());
-    for (std::size_t c = 0; c < state.companions.size(); ++c) {
+        state.add_companion(static_cast<Integrator>(new_integrator), state.simulation().dt());
+    for (std::size_t c = 0; c + 1 < state.runs.size(); ++c) {
         ImGui::PushID(static_cast<int>(c) + 100);
-        const Simulation& copy = state.companions[c].simulation;
+        const Simulation& copy = state.runs[c + 1].simulation;
         ImGui::Text("copy %zu", c + 1);
         int current = static_cast<int>(copy.integrator());
         const std::string control = "copy." + std::to_string(c);
@@ -384,7 +384,7 @@ bool draw_control_panel(DemoState& state, const ScreenRect& area) {
     // The scene's name, and under it pause, step and reset, each labelled with its key: at
     // the top, where no section's height can push them out of sight.
     // The scene picker and the help key come right after them, above the fold of any window.
-    ImGui::TextUnformatted(state.simulation.scene().name.c_str());
+    ImGui::TextUnformatted(state.simulation().scene().name.c_str());
     ImGui::SameLine();
     ImGui::TextDisabled("  H: help");
     run_buttons(state);
@@ -395,7 +395,7 @@ bool draw_control_panel(DemoState& state, const ScreenRect& area) {
     if (ImGui::CollapsingHeader("solver", ImGuiTreeNodeFlags_DefaultOpen)) solver(state);
     if (ImGui::CollapsingHeader("materials")) materials(state);
     // A mesh's shape is its OBJ file's: there is no grid to rebuild.
-    if (state.simulation.scene().cloth.mesh.empty() &&
+    if (state.simulation().scene().cloth.mesh.empty() &&
         ImGui::CollapsingHeader("grid (rebuilt on apply)"))
         grid_section(state);
     if (ImGui::CollapsingHeader("forces")) forces_section(state);

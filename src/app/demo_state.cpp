@@ -28,6 +28,10 @@ Vec3d to_vec3d(const glm::vec3& v) {
     return {static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z)};
 }
 
+DemoRun new_run(const Simulation& started, double restart_dt) {
+    return DemoRun{started, view::ClothView(started.cloth()), {}, restart_dt, 0.0};
+}
+
 CameraRig scene_rig(const Scene& scene) {
     return CameraRig::looking_at(to_vec3(scene.camera.position), to_vec3(scene.camera.target),
                                  static_cast<float>(scene.camera.fov_degrees));
@@ -42,31 +46,26 @@ DemoState::DemoState(const std::string& path, const std::vector<std::string>& sc
     : scene_path(path),
       overrides(scene_overrides),
       scene(loaded),
-      simulation(loaded),
-      cloth_view(simulation.cloth()),
-      restart_dt(loaded.solver.dt),
-      ground_height(view::ground_height_below(simulation.cloth(), simulation.colliders())),
+      runs{new_run(Simulation(loaded), loaded.solver.dt)},
+      ground_height(view::ground_height_below(simulation().cloth(), simulation().colliders())),
       rig(scene_rig(loaded)),
       initial_rig(rig) {}
 
 void DemoState::after_new_state() {
-    cloth_view = view::ClothView(simulation.cloth());
-    recovery.forget();
-    for (Companion& companion : companions) {
-        companion.cloth_view = view::ClothView(companion.simulation.cloth());
-        companion.recovery.forget();
+    for (DemoRun& run : runs) {
+        run.cloth_view = view::ClothView(run.simulation.cloth());
+        run.recovery.forget();
     }
-    ground_height = view::ground_height_below(simulation.cloth(), simulation.colliders());
+    ground_height = view::ground_height_below(simulation().cloth(), simulation().colliders());
     hand = Hand{};
     clock.reset();
 }
 
 void DemoState::replace_simulation(const Scene& new_scene) {
-    simulation = Simulation(new_scene);
-    for (Companion& companion : companions) {
+    for (std::size_t r = 0; r < runs.size(); ++r) {
         Scene own = new_scene;
-        own.solver = companion.simulation.scene().solver;
-        companion.simulation = Simulation(own);
+        if (r > 0) own.solver = runs[r].simulation.scene().solver;  // a copy keeps its solver
+        runs[r].simulation = Simulation(own);
     }
     after_new_state();
 }
@@ -98,55 +97,58 @@ int DemoState::step(int steps) {
                replaying->events[replay_next].step <= steps_run)
             apply_to_all_runs(replaying->events[replay_next++].event);
     };
-    for (Companion& companion : companions) companion.seconds = 0.0;
+    for (DemoRun& run : runs) run.seconds = 0.0;
     apply_due_events();
     for (int s = 0; s < steps; ++s) {
         if (replay_finished()) return s;  // a replay ends where its recording ended
         ++steps_run;
         std::string why;
-        const bool sound = recovery.step(simulation, restart_dt, why);
-        // Each companion follows to the same simulated time with its own dt.
-        for (std::size_t c = 0; c < companions.size(); ++c) {
-            Companion& companion = companions[c];
-            const auto started = std::chrono::steady_clock::now();
-            std::string companion_why;
-            // At most one step more than keeps pace: a copy that rolled back or restarted
-            // catches up over the following steps instead of stalling this one.
-            int budget =
-                static_cast<int>(std::ceil(simulation.dt() / companion.simulation.dt())) + 1;
-            while (budget-- > 0 && companion.simulation.time() + 0.5 * companion.simulation.dt() <=
-                                       simulation.time()) {
-                const bool companion_sound = companion.recovery.step(
-                    companion.simulation, companion.restart_dt, companion_why);
-                if (!companion_why.empty()) {
-                    say("copy " + std::to_string(c + 1) + ": " + companion_why,
-                        companion_sound ? Tone::info : Tone::problem);
-                    companion_why.clear();
-                }
-                if (!companion_sound) {
-                    companion.cloth_view = view::ClothView(companion.simulation.cloth());
-                    if (companion.recovery.hopeless()) {
-                        pause_hopeless(companion.recovery, "copy " + std::to_string(c + 1));
-                        return s + 1;
-                    }
-                    break;
-                }
-            }
-            companion.seconds +=
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-        }
+        const bool sound = main_run().recovery.step(simulation(), main_run().restart_dt, why);
+        for (std::size_t r = 1; r < runs.size(); ++r)
+            if (!follow_main_run(r)) return s + 1;
         apply_due_events();
         // The main run speaks last, so its message is the one on screen.
         if (sound && !why.empty()) say(why, Tone::info);  // dt grew back
         if (!sound) {
             hand.dragging = false;
-            cloth_view = view::ClothView(simulation.cloth());
+            main_run().cloth_view = view::ClothView(simulation().cloth());
             say(why, Tone::problem);
-            if (recovery.hopeless()) pause_hopeless(recovery, "the scene");
+            if (main_run().recovery.hopeless()) pause_hopeless(main_run().recovery, "the scene");
             return s;
         }
     }
     return steps;
+}
+
+bool DemoState::follow_main_run(std::size_t run) {
+    DemoRun& copy = runs[run];
+    const std::string name = "copy " + std::to_string(run);
+    const auto started = std::chrono::steady_clock::now();
+    std::string why;
+    // Each copy follows to the same simulated time with its own dt, at most one step more
+    // than keeps pace: a copy that rolled back or restarted catches up over the following
+    // steps instead of stalling this one.
+    int budget = static_cast<int>(std::ceil(simulation().dt() / copy.simulation.dt())) + 1;
+    bool window_runs = true;
+    while (budget-- > 0 &&
+           copy.simulation.time() + 0.5 * copy.simulation.dt() <= simulation().time()) {
+        const bool sound = copy.recovery.step(copy.simulation, copy.restart_dt, why);
+        if (!why.empty()) {
+            say(name + ": " + why, sound ? Tone::info : Tone::problem);
+            why.clear();
+        }
+        if (!sound) {
+            copy.cloth_view = view::ClothView(copy.simulation.cloth());
+            if (copy.recovery.hopeless()) {
+                pause_hopeless(copy.recovery, name);
+                window_runs = false;
+            }
+            break;
+        }
+    }
+    copy.seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return window_runs;
 }
 
 namespace {
@@ -179,35 +181,34 @@ std::string override_keys(const std::vector<std::string>& overrides) {
 // ---- runs side by side --------------------------------------------------------------------------
 
 const Simulation& DemoState::run(int index) const {
-    return index <= 0 || index > static_cast<int>(companions.size())
-               ? simulation
-               : companions[static_cast<std::size_t>(index - 1)].simulation;
+    return index <= 0 || index >= run_count() ? simulation()
+                                              : runs[static_cast<std::size_t>(index)].simulation;
 }
 
 void DemoState::add_companion(Integrator integrator, double dt) {
-    Companion companion{simulation, view::ClothView(simulation.cloth()), {}, dt, 0.0};
-    companion.simulation.set_integrator(integrator);
-    companion.simulation.set_dt(dt);
-    companions.push_back(std::move(companion));
+    runs.push_back(new_run(simulation(), dt));
+    runs.back().simulation.set_integrator(integrator);
+    runs.back().simulation.set_dt(dt);
 }
 
 void DemoState::remove_companion(std::size_t index) {
-    if (index < companions.size()) companions.erase(companions.begin() + static_cast<long>(index));
+    if (index + 1 < runs.size()) runs.erase(runs.begin() + static_cast<long>(index + 1));
 }
 
 std::optional<std::string> DemoState::edit_companion(std::size_t index,
                                                      const std::vector<SceneEdit>& edits) {
-    if (index >= companions.size()) return "no copy " + std::to_string(index + 1);
+    if (index + 1 >= runs.size()) return "no copy " + std::to_string(index + 1);
     for (const SceneEdit& edit : edits)
         if (!is_solver_key(edit.key))
             return "a copy differs from the main run only in its integrator and dt";
-    Simulation& companion = companions[index].simulation;
+    DemoRun& copy = runs[index + 1];
+    Simulation& companion = copy.simulation;
     Scene checked = companion.scene();
     if (auto problem = apply_scene_edits(checked, edits)) return "error: " + *problem;
     if (auto problem = window_dt_problem(checked.solver.dt)) return "error: " + *problem;
     // dt differs from the running one only where the user set it, and only then is it the
     // copy's new chosen dt (not whatever recovery had halved it to).
-    if (checked.solver.dt != companion.dt()) companions[index].restart_dt = checked.solver.dt;
+    if (checked.solver.dt != companion.dt()) copy.restart_dt = checked.solver.dt;
     companion.set_parameters(checked);
     return std::nullopt;
 }
@@ -229,30 +230,28 @@ void DemoState::perform(const ClothEvent& event) {
 
 void DemoState::apply_to_all_runs(const ClothEvent& event) {
     using Kind = ClothEvent::Kind;
-    const double dt_before = simulation.dt();
-    bool rebuilt = apply_event(simulation, event) == EventResult::rebuilt;
-    for (Companion& companion : companions) {
-        const SolverSpec own = companion.simulation.scene().solver;
-        rebuilt |= apply_event(companion.simulation, event, &own) == EventResult::rebuilt;
+    const double dt_before = simulation().dt();
+    bool rebuilt = false;
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+        const SolverSpec own = runs[r].simulation.scene().solver;  // a copy keeps its solver
+        rebuilt |=
+            apply_event(runs[r].simulation, event, r > 0 ? &own : nullptr) == EventResult::rebuilt;
     }
     // The panel writes the running parameters with its edits, so dt differs from the running
     // one only where the user set it: that is the new chosen dt. Here, not in change(), so a
     // replay of the event chooses the same dt.
     const bool parameters = event.kind == Kind::edit || event.kind == Kind::parameters;
-    if (parameters && simulation.dt() != dt_before) {
-        restart_dt = simulation.dt();
-        recovery.restart_growth();
+    if (parameters && simulation().dt() != dt_before) {
+        main_run().restart_dt = simulation().dt();
+        main_run().recovery.restart_growth();
     }
     if (event.kind == Kind::reset) {
         // R starts over at the chosen dt: whatever recovery halved it to was for the motion
         // that diverged, which is gone.
         // set_dt only where dt differs: it drops the history a multistep method carries.
-        if (simulation.dt() != restart_dt) simulation.set_dt(restart_dt);
-        recovery.recoveries = 0;
-        for (Companion& companion : companions) {
-            if (companion.simulation.dt() != companion.restart_dt)
-                companion.simulation.set_dt(companion.restart_dt);
-            companion.recovery.recoveries = 0;
+        for (DemoRun& run : runs) {
+            if (run.simulation.dt() != run.restart_dt) run.simulation.set_dt(run.restart_dt);
+            run.recovery.recoveries = 0;
         }
     }
     if (rebuilt || event.kind == Kind::reset) {
@@ -265,13 +264,11 @@ void DemoState::apply_to_all_runs(const ClothEvent& event) {
             r.last_good = s;
             r.last_good_time = s.time();
         };
-        remember(recovery, simulation);
-        for (Companion& companion : companions) remember(companion.recovery, companion.simulation);
+        for (DemoRun& run : runs) remember(run.recovery, run.simulation);
     } else if (parameters) {
         // New parameters get as many restarts as the first ones did.
-        recovery.restarts_in_a_row = 0;
-        for (Companion& companion : companions) companion.recovery.restarts_in_a_row = 0;
-        ground_height = view::ground_height_below(simulation.cloth(), simulation.colliders());
+        for (DemoRun& run : runs) run.recovery.restarts_in_a_row = 0;
+        ground_height = view::ground_height_below(simulation().cloth(), simulation().colliders());
     }
     if (event.kind == ClothEvent::Kind::let_go) hand.dragging = false;
 }
@@ -287,15 +284,15 @@ bool DemoState::grab(const glm::vec2& cursor, ViewSize view, int run_index) {
     event.radius = drag_radius;
     perform(event);
     hand_hint = false;
-    hand.dragging = simulation.drag().active();
+    hand.dragging = simulation().drag().active();
     hand.anchor = hit->point;
     return hand.dragging;
 }
 
 void DemoState::pull(const glm::vec2& cursor, ViewSize view) {
-    if (!hand.dragging || !simulation.drag().active()) return;
+    if (!hand.dragging || !simulation().drag().active()) return;
     auto target = point_on_grab_plane(rig.camera(), view.width, view.height, cursor, hand.anchor);
-    if (!target || *target == simulation.drag().target) return;  // nothing new to record
+    if (!target || *target == simulation().drag().target) return;  // nothing new to record
     ClothEvent event;
     event.kind = ClothEvent::Kind::pull;
     event.target = *target;
@@ -328,9 +325,9 @@ std::size_t DemoState::cut_to(const glm::vec2& cursor, ViewSize view, int run_in
     hand.last_cursor = cursor;
     hand.last_on_screen = std::move(on_screen);
     if (event.springs.empty()) return 0;
-    const std::size_t before = simulation.cloth().spring_count();
+    const std::size_t before = simulation().cloth().spring_count();
     perform(event);
-    return before - simulation.cloth().spring_count();
+    return before - simulation().cloth().spring_count();
 }
 
 void DemoState::end_cut() {
@@ -372,7 +369,7 @@ std::optional<std::string> window_dt_problem(double dt) {
 std::optional<std::string> DemoState::edit(const std::vector<SceneEdit>& edits,
                                            const std::string& where) {
     if (replaying) return std::string("a session is replaying: stop it to change parameters");
-    Scene checked = simulation.scene();
+    Scene checked = simulation().scene();
     if (auto problem = apply_scene_edits(checked, edits))
         return "error: " + (where.empty() ? "" : where + ": ") + *problem;
     if (auto problem = window_dt_problem(checked.solver.dt))
@@ -392,7 +389,7 @@ std::optional<std::string> DemoState::change(const std::vector<std::string>& tex
 }
 
 std::optional<std::string> DemoState::change_scene(const Scene& wanted) {
-    std::optional<std::vector<SceneEdit>> edits = scene_edits_between(simulation.scene(), wanted);
+    std::optional<std::vector<SceneEdit>> edits = scene_edits_between(simulation().scene(), wanted);
     if (!edits) return std::string("error: only loading another scene changes that");
     return edit(*edits);
 }
@@ -406,7 +403,7 @@ std::optional<std::string> DemoState::change_field_of_view(double degrees) {
 }
 
 void DemoState::move_collider(std::size_t index, const Vec3d& offset) {
-    Scene wanted = simulation.scene();
+    Scene wanted = simulation().scene();
     if (index >= wanted.colliders.size()) return;
     ColliderSpec& collider = wanted.colliders[index];
     for (int k = 0; k < 3; ++k) {
@@ -441,7 +438,7 @@ bool DemoState::load_scene(const std::string& path, std::string& error) {
     recording.reset();
     replaying.reset();
     replace_simulation(scene);
-    restart_dt = scene.solver.dt;
+    main_run().restart_dt = scene.solver.dt;
     steps_run = 0;
     rig = initial_rig = scene_rig(scene);
     return true;
@@ -454,13 +451,13 @@ void DemoState::start_recording() {
     apply_to_all_runs(plain_event(ClothEvent::Kind::reset));  // at the chosen dt
     steps_run = 0;
     recording = SessionRecord{};
-    recording->scene_toml = scene_to_toml(simulation.scene());
+    recording->scene_toml = scene_to_toml(simulation().scene());
 }
 
 SessionRecord DemoState::stop_recording() {
     SessionRecord record = recording.value_or(SessionRecord{});
     record.steps = steps_run;
-    record.final_state_hash = hash_state(simulation.cloth());
+    record.final_state_hash = hash_state(simulation().cloth());
     recording.reset();
     return record;
 }
@@ -474,7 +471,7 @@ void DemoState::start_replay(const SessionRecord& record) {
     recording.reset();
     scene = *loaded.scene;
     replace_simulation(scene);
-    restart_dt = scene.solver.dt;
+    main_run().restart_dt = scene.solver.dt;
     steps_run = 0;
     replaying = record;
     replay_next = 0;
@@ -487,11 +484,11 @@ void DemoState::stop_replay() {
 
 bool DemoState::replay_matches() const {
     return replay_finished() && replay_next == replaying->events.size() &&
-           hash_state(simulation.cloth()) == replaying->final_state_hash;
+           hash_state(simulation().cloth()) == replaying->final_state_hash;
 }
 
 Scene DemoState::scene_to_save() const {
-    Scene saved = simulation.scene();
+    Scene saved = simulation().scene();
     saved.camera.position = to_vec3d(rig.position);
     saved.camera.target = to_vec3d(rig.target());
     saved.camera.fov_degrees = static_cast<double>(rig.fov_degrees);

@@ -65,12 +65,14 @@ struct ViewSize {
     int height = 1;
 };
 
-// A run shown beside the main one: same cloth, same hand, its own integrator and dt.
-struct Companion {
+// A run the window shows: the main one, or a copy beside it with the same cloth and hand and
+// its own integrator and dt.
+struct DemoRun {
     Simulation simulation;
     view::ClothView cloth_view;
     Recovery recovery;
-    // s, its own dt as chosen: what recovery grows dt back to and a hopeless run restarts with
+    // s, its dt as chosen (the scene's, or the last one set in the panel): what recovery grows
+    // dt back to, R restores, and a hopeless run restarts with
     double restart_dt = 0.0;
     double seconds = 0.0;  // stepping in the last frame, s
 };
@@ -83,13 +85,12 @@ struct DemoState {
     std::string scene_path;
     std::vector<std::string> overrides;
     Scene scene;  // as loaded (or as the replayed session started)
-    Simulation simulation;
-    view::ClothView cloth_view;
-    Recovery recovery;
-    // s, dt as chosen (the scene's, or the last one set in the panel): what recovery grows dt
-    // back to, R restores, and a hopeless run restarts with
-    double restart_dt = 0.0;
-    std::vector<Companion> companions;
+    // The runs side by side: the main run first, then its copies. Never empty.
+    std::vector<DemoRun> runs;
+    DemoRun& main_run() { return runs.front(); }
+    const DemoRun& main_run() const { return runs.front(); }
+    Simulation& simulation() { return main_run().simulation; }
+    const Simulation& simulation() const { return main_run().simulation; }
     view::FrameOptions frame_options;
     float ground_height = 0.0f;
     CameraRig rig;
@@ -128,13 +129,15 @@ struct DemoState {
     // steps the main run took.
     int step(int steps);
 
-    // The runs side by side: 0 is the main run, 1.. the companions.
-    int run_count() const { return 1 + static_cast<int>(companions.size()); }
+    // The runs side by side: 0 is the main run, 1.. the copies; an index out of range is the
+    // main run.
+    int run_count() const { return static_cast<int>(runs.size()); }
     const Simulation& run(int index) const;
-    // A companion starting from the main run's current state with another integrator and dt.
+    // A copy starting from the main run's current state with another integrator and dt.
     void add_companion(Integrator integrator, double dt);
+    // Copy `index` (0: the first copy, run 1) goes.
     void remove_companion(std::size_t index);
-    // Edits a companion's own solver (solver.integrator, solver.dt), checked; the copy is not
+    // Edits copy `index`'s own solver (solver.integrator, solver.dt), checked; the copy is not
     // recorded (a replay has no copies unless asked for).
     std::optional<std::string> edit_companion(std::size_t index,
                                               const std::vector<SceneEdit>& edits);
@@ -215,6 +218,8 @@ struct DemoState {
     // Pauses the run whose `hopeless` recovery restarted restarts_before_pause times in a
     // row, saying so (of `run`: "the scene", "copy 2") and what to change.
     void pause_hopeless(Recovery& hopeless, const std::string& run);
+    // Steps copy `run` (1..) on to the main run's time; false if it paused the window.
+    bool follow_main_run(std::size_t run);
     // edit(), its refusal said as coming from `where` ("--set KEY"; "" names nothing).
     std::optional<std::string> edit(const std::vector<SceneEdit>& edits, const std::string& where);
     void perform(const ClothEvent& event);  // record it, then apply it to every run

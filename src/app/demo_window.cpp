@@ -212,7 +212,7 @@ void save_cloth_obj(DemoState& state) {
     if (folder.empty()) return;
     const std::string path = next_free_path(folder, "weft-cloth", "obj");
     std::ostringstream text;
-    write_cloth_obj(state.simulation.cloth(), state.simulation.scene().name, text);
+    write_cloth_obj(state.simulation().cloth(), state.simulation().scene().name, text);
     std::string error;
     if (write_file_atomically(path, text.str(), false, error))
         state.say("saved the cloth as a mesh to " + path, Tone::success);
@@ -241,7 +241,7 @@ void toggle_frame_capture(DemoState& state) {
         state.say(error, Tone::problem);
         return;
     }
-    state.frame_capture.emplace(folder, state.simulation.time());
+    state.frame_capture.emplace(folder, state.simulation().time());
     state.say("capturing frames to " + folder + " (F9 stops)", Tone::info);
 }
 
@@ -284,7 +284,7 @@ bool handle_event(const SDL_Event& event, DemoState& state, Window& w) {
                 // Frames the cloth's largest piece as it is now, seen from the scene camera's
                 // direction.
                 const ViewSize view = columns_of(state, w).view();
-                state.rig = framed(state.initial_rig, largest_piece_box(state.simulation.cloth()),
+                state.rig = framed(state.initial_rig, largest_piece_box(state.simulation().cloth()),
                                    float(view.width) / float(view.height));
                 break;
             }
@@ -349,7 +349,7 @@ void move_camera(DemoState& state, double seconds) {
     if (SDL_GetModState() & KMOD_SHIFT) {
         // Shift: the same keys move the first sphere, at 0.5 m/s, level with the camera's
         // heading (W pushes it away from the viewer) and straight up or down.
-        const auto& colliders = state.simulation.colliders();
+        const auto& colliders = state.simulation().colliders();
         const auto sphere = std::find_if(colliders.begin(), colliders.end(), [](const Collider& c) {
             return c.type == ColliderType::sphere;
         });
@@ -422,16 +422,15 @@ void draw_run_labels(const DemoState& state, const Window& w) {
     const Columns columns = columns_of(state, w);
     constexpr float margin = 8.0f;
     const float widest = std::max(1.0f, static_cast<float>(columns.width) - 2.0f * margin);
-    double companions_seconds = 0.0;
-    for (const Companion& companion : state.companions) companions_seconds += companion.seconds;
+    double copies_seconds = 0.0;
+    for (std::size_t r = 1; r < state.runs.size(); ++r) copies_seconds += state.runs[r].seconds;
     for (int run = 0; run < state.run_count(); ++run) {
-        const Simulation& simulation = state.run(run);
-        const double seconds = run == 0
-                                   ? state.statistics.sim_seconds - companions_seconds
-                                   : state.companions[static_cast<std::size_t>(run - 1)].seconds;
-        const int recoveries =
-            run == 0 ? state.recovery.recoveries
-                     : state.companions[static_cast<std::size_t>(run - 1)].recovery.recoveries;
+        const DemoRun& shown = state.runs[static_cast<std::size_t>(run)];
+        const Simulation& simulation = shown.simulation;
+        // The frame's stepping is measured whole; each copy's is its own.
+        const double seconds =
+            run == 0 ? state.statistics.sim_seconds - copies_seconds : shown.seconds;
+        const int recoveries = shown.recovery.recoveries;
         ImGui::SetNextWindowPos(ImVec2(columns.right_of(run) - margin, columns.top + margin),
                                 ImGuiCond_Always, ImVec2(1.0f, 0.0f));
         ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(widest, FLT_MAX));
@@ -498,7 +497,7 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
     }
     DemoState state(path, command_line.overrides, *scene);
     state.captures = captures_folder();
-    state.recovery.profiling = true;  // the panel's step profile
+    state.main_run().recovery.profiling = true;  // the panel's step profile
     for (const CommandLine::Comparison& comparison : command_line.comparisons)
         state.add_companion(*integrator_from_name(comparison.integrator),
                             comparison.dt > 0.0 ? comparison.dt : scene->solver.dt);
@@ -606,8 +605,8 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
         present_frame(state, w);
         if (state.frame_capture) {
             std::string error;
-            if (!state.frame_capture->write_due(w.framebuffer, state.simulation.time(),
-                                                state.simulation.dt(), error)) {
+            if (!state.frame_capture->write_due(w.framebuffer, state.simulation().time(),
+                                                state.simulation().dt(), error)) {
                 state.say("frame capture stopped: " + error, Tone::problem);
                 state.frame_capture.reset();
             }
@@ -656,7 +655,7 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
     }
     if (command_line.dump_path) {
         std::ofstream dump(*command_line.dump_path, std::ios::binary | std::ios::trunc);
-        write_state_csv(state.simulation.cloth(), dump);
+        write_state_csv(state.simulation().cloth(), dump);
         if (!dump)
             std::fprintf(stderr, "error: %s: cannot write\n", command_line.dump_path->c_str());
     }

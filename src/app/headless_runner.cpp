@@ -326,7 +326,7 @@ int run_headless_replay(const CommandLine& command_line) {
     for (const CommandLine::Comparison& comparison : command_line.comparisons)
         state.add_companion(*integrator_from_name(comparison.integrator),
                             comparison.dt > 0.0 ? comparison.dt : scene.scene->solver.dt);
-    state.recovery.profiling = command_line.profile;
+    state.main_run().recovery.profiling = command_line.profile;
     state.start_replay(*record);
     std::optional<FrameWriter> frames;
     auto runs_now = [&] {
@@ -348,15 +348,15 @@ int run_headless_replay(const CommandLine& command_line) {
         "replayed %s and %s of %s: final state hash %016llx %s\n",
         app::counted(static_cast<long long>(state.steps_run), "step", "steps").c_str(),
         app::counted(static_cast<long long>(record->events.size()), "event", "events").c_str(),
-        path.c_str(), static_cast<unsigned long long>(hash_state(state.simulation.cloth())),
+        path.c_str(), static_cast<unsigned long long>(hash_state(state.simulation().cloth())),
         matches ? "matches the recording" : "DIFFERS from the recording");
     if (command_line.profile)
-        std::fputs(app::profile_text(state.recovery.profile, state.simulation.dt(),
-                                     state.simulation.thread_count())
+        std::fputs(app::profile_text(state.main_run().recovery.profile, state.simulation().dt(),
+                                     state.simulation().thread_count())
                        .c_str(),
                    stdout);
     if (!write_outputs(command_line, files, runs_now(),
-                       final_ground_height(state.simulation, state.ground_height)))
+                       final_ground_height(state.simulation(), state.ground_height)))
         return exit_bad_input;
     return matches ? exit_ok : exit_replay_differs;
 }

@@ -10,11 +10,11 @@ namespace weft::app {
 void colliders_section(DemoState& state) {
     // The floor under the drawn ground (sim/collision/floor.h), unless the scene's own ground plane
     // is.
-    bool floor = state.simulation.scene().floor_enabled;
+    bool floor = state.simulation().scene().floor_enabled;
     if (ImGui::Checkbox("floor (the ground stops the cloth)", &floor))
         edit(state, {SceneKey::floor_enabled, floor});
     refusal_below("floor.enabled");
-    const std::vector<ColliderSpec>& specs = state.simulation.scene().colliders;
+    const std::vector<ColliderSpec>& specs = state.simulation().scene().colliders;
     if (specs.empty()) {
         ImGui::TextDisabled("no other collider in this scene");
         return;
@@ -23,7 +23,7 @@ void colliders_section(DemoState& state) {
         ImGui::PushID(static_cast<int>(c));
         // The whole scene with this collider edited, checked like a scene file: --set cannot
         // name one entry of the [[colliders]] array.
-        Scene wanted = state.simulation.scene();
+        Scene wanted = state.simulation().scene();
         ColliderSpec& spec = wanted.colliders[c];
         const bool sphere = spec.type == ColliderType::sphere;
         if (sphere)

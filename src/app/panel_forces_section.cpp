@@ -7,7 +7,7 @@
 namespace weft::app {
 
 void forces_section(DemoState& state) {
-    const ForcesSpec& f = state.simulation.scene().forces;
+    const ForcesSpec& f = state.simulation().scene().forces;
     Vec3d gravity = f.gravity;
     if (drag3("gravity (m/s2)", gravity, 0.05)) edit(state, {SceneKey::gravity, gravity});
     refusal_below("forces.gravity");

@@ -40,7 +40,7 @@ void grid_section(DemoState& state) {
     // (Apply, another scene, a replay) the draft starts again from it.
     static ClothSpec draft, drafted_from;
     static bool drafted = false;
-    const ClothSpec& running = state.simulation.scene().cloth;
+    const ClothSpec& running = state.simulation().scene().cloth;
     if (!drafted || !same_grid(running, drafted_from)) {
         draft = drafted_from = running;
         drafted = true;

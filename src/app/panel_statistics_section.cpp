@@ -22,18 +22,18 @@ void plot(const char* id, const PlotHistory& history, const char* label) {
 
 void statistics_section(DemoState& state) {
     const DemoStatistics& s = state.statistics;
-    const Cloth& cloth = state.simulation.cloth();
+    const Cloth& cloth = state.simulation().cloth();
     ImGui::Text("%.0f fps   sim %.2f ms   raster %.2f ms", ImGui::GetIO().Framerate,
                 s.sim_seconds * 1e3, s.raster_seconds * 1e3);
     ImGui::Text("%s a frame   t = %.2f s%s", counted(s.steps, "step", "steps").c_str(),
-                state.simulation.time(), state.paused ? "   (paused)" : "");
+                state.simulation().time(), state.paused ? "   (paused)" : "");
     ImGui::Text(
         "%s, %s, %s",
         counted(static_cast<long long>(cloth.particle_count()), "particle", "particles").c_str(),
         counted(static_cast<long long>(cloth.spring_count()), "spring", "springs").c_str(),
-        counted(state.simulation.thread_count(), "thread", "threads").c_str());
+        counted(state.simulation().thread_count(), "thread", "threads").c_str());
     // Implicit Euler's cost and accuracy per step hang on its conjugate-gradient solve.
-    if (auto solve = linear_solve_text(state.simulation)) ImGui::TextUnformatted(solve->c_str());
+    if (auto solve = linear_solve_text(state.simulation())) ImGui::TextUnformatted(solve->c_str());
     // The plots gain a sample for each frame that stepped, so they hold still while paused.
     const FramePlots& plots = s.plots;
     char label[192];
@@ -52,9 +52,9 @@ void statistics_section(DemoState& state) {
                       plots.frame_milliseconds.latest());
         plot("##frame_ms", plots.frame_milliseconds, label);
     }
-    if (state.recovery.recoveries > 0)
+    if (state.main_run().recovery.recoveries > 0)
         ImGui::TextColored(ImVec4(1, 0.6f, 0.2f, 1), "recovered from divergence %s",
-                           counted(state.recovery.recoveries, "time", "times").c_str());
+                           counted(state.main_run().recovery.recoveries, "time", "times").c_str());
 }
 
 }  // namespace weft::app

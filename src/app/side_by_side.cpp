@@ -62,9 +62,8 @@ void render_columns(raster::Framebuffer& framebuffer, std::vector<raster::Frameb
 
 void render_runs(raster::Framebuffer& framebuffer, std::vector<raster::Framebuffer>& scratch,
                  DemoState& state, const Columns& columns, WorkerPool* pool) {
-    std::vector<RunView> runs{{&state.simulation, &state.cloth_view}};
-    for (Companion& companion : state.companions)
-        runs.push_back({&companion.simulation, &companion.cloth_view});
+    std::vector<RunView> runs;
+    for (DemoRun& run : state.runs) runs.push_back({&run.simulation, &run.cloth_view});
     runs.resize(std::min(runs.size(), static_cast<std::size_t>(columns.count)));
     render_columns(framebuffer, scratch, state.rig.camera(), runs, columns.width,
                    state.frame_options, state.ground_height, pool);

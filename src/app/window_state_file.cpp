@@ -10,10 +10,10 @@ std::string window_state_text(long long frames_drawn, const DemoState& state) {
     std::ostringstream out;
     out.precision(17);
     out << "frames " << frames_drawn << '\n'
-        << "steps " << state.simulation.steps_taken() << '\n'
-        << "time " << state.simulation.time() << '\n'
+        << "steps " << state.simulation().steps_taken() << '\n'
+        << "time " << state.simulation().time() << '\n'
         << "paused " << (state.paused ? 1 : 0) << '\n'
-        << "held " << (state.simulation.drag().active() ? 1 : 0) << '\n';
+        << "held " << (state.simulation().drag().active() ? 1 : 0) << '\n';
     return out.str();
 }
 

@@ -20,8 +20,9 @@ namespace {
 
 // Steps `state` until its first rollback; returns the message it gave then.
 std::string step_until_rolled_back(DemoState& state) {
-    for (int frame = 0; frame < 200 && state.recovery.recoveries == 0; ++frame) state.step(16);
-    EXPECT_EQ(state.recovery.recoveries, 1);
+    for (int frame = 0; frame < 200 && state.main_run().recovery.recoveries == 0; ++frame)
+        state.step(16);
+    EXPECT_EQ(state.main_run().recovery.recoveries, 1);
     return state.message;
 }
 
@@ -29,22 +30,22 @@ std::string step_until_rolled_back(DemoState& state) {
 // bounded number of frames (no freeze), every frame without a rollback advancing the time,
 // and with at most a few rollbacks more while dt finds what holds.
 void runs_on_after_recovery(DemoState& state, double seconds) {
-    const double until = state.simulation.time() + seconds;
+    const double until = state.simulation().time() + seconds;
     // 16 steps a frame at a sixteenth of the chosen dt (four halvings) cover the chosen dt
     // a frame; four times as many frames leave room for the rollbacks.
-    const int most_frames = static_cast<int>(4.0 * seconds / state.restart_dt);
+    const int most_frames = static_cast<int>(4.0 * seconds / state.main_run().restart_dt);
     int frames = 0;
-    while (state.simulation.time() < until) {
-        ASSERT_LT(++frames, most_frames) << "the run stalls at t = " << state.simulation.time();
-        const double before = state.simulation.time();
-        const int recoveries = state.recovery.recoveries;
+    while (state.simulation().time() < until) {
+        ASSERT_LT(++frames, most_frames) << "the run stalls at t = " << state.simulation().time();
+        const double before = state.simulation().time();
+        const int recoveries = state.main_run().recovery.recoveries;
         state.step(16);
-        if (state.recovery.recoveries == recoveries) {
-            ASSERT_GT(state.simulation.time(), before) << state.message;
+        if (state.main_run().recovery.recoveries == recoveries) {
+            ASSERT_GT(state.simulation().time(), before) << state.message;
         }
-        ASSERT_FALSE(find_divergence(state.simulation.cloth(), false)) << "not finite";
+        ASSERT_FALSE(find_divergence(state.simulation().cloth(), false)) << "not finite";
     }
-    EXPECT_LE(state.recovery.recoveries, 6);
+    EXPECT_LE(state.main_run().recovery.recoveries, 6);
 }
 
 TEST(DemoState, AnEnergyAlarmRollsBackHalvesDtAndTheRunGoesOn) {
@@ -59,7 +60,7 @@ TEST(DemoState, AnEnergyAlarmRollsBackHalvesDtAndTheRunGoesOn) {
     EXPECT_NE(said.find("energy grew"), std::string::npos) << said;
     EXPECT_NE(said.find("dt halved"), std::string::npos) << said;
     EXPECT_NE(said.find("rolled back to"), std::string::npos) << said;
-    EXPECT_EQ(state.simulation.dt(), 0.00025);
+    EXPECT_EQ(state.simulation().dt(), 0.00025);
     runs_on_after_recovery(state, 1.5);
 }
 
@@ -71,9 +72,9 @@ TEST(DemoState, ARunawayTearRollsBackHalvesDtAndTheRunGoesOn) {
     const std::string said = step_until_rolled_back(state);
     EXPECT_NE(said.find("tearing ran away"), std::string::npos) << said;
     EXPECT_NE(said.find("dt halved"), std::string::npos) << said;
-    EXPECT_EQ(state.simulation.dt(), 0.001);
+    EXPECT_EQ(state.simulation().dt(), 0.001);
     // The rollback went back to before the shredding: the sheet is whole again.
-    EXPECT_EQ(state.simulation.cloth().spring_count(),
+    EXPECT_EQ(state.simulation().cloth().spring_count(),
               Simulation(state.scene).cloth().spring_count());
     runs_on_after_recovery(state, 1.5);
 }

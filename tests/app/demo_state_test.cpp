@@ -65,9 +65,9 @@ const glm::vec2 view_centre{400.0f, 300.0f};
 TEST(DemoState, ARefusedEditChangesNothingFieldByField) {
     DemoState state = demo();
     state.step(150);
-    const Scene before = state.simulation.scene();
-    const std::uint64_t hash = hash_state(state.simulation.cloth());
-    const double time = state.simulation.time();
+    const Scene before = state.simulation().scene();
+    const std::uint64_t hash = hash_state(state.simulation().cloth());
+    const double time = state.simulation().time();
     const std::vector<std::vector<std::string>> refused = {
         {"springs.shear.stiffness=-5"},
         {"solver.dt=0"},
@@ -88,34 +88,34 @@ TEST(DemoState, ARefusedEditChangesNothingFieldByField) {
         const std::optional<std::string> error = state.change(edits);
         ASSERT_TRUE(error.has_value()) << edits.back();
         EXPECT_NE(error->find("--set"), std::string::npos) << *error;
-        EXPECT_TRUE(state.simulation.scene() == before) << edits.back();
-        EXPECT_EQ(hash_state(state.simulation.cloth()), hash) << edits.back();
-        EXPECT_EQ(state.simulation.time(), time);
+        EXPECT_TRUE(state.simulation().scene() == before) << edits.back();
+        EXPECT_EQ(hash_state(state.simulation().cloth()), hash) << edits.back();
+        EXPECT_EQ(state.simulation().time(), time);
     }
-    EXPECT_EQ(state.simulation.cloth().find_group(SpringFamily::structural)->stiffness,
+    EXPECT_EQ(state.simulation().cloth().find_group(SpringFamily::structural)->stiffness,
               before.structural.stiffness);
 }
 
 TEST(DemoState, AnAcceptedEditAppliesLiveWithoutRestarting) {
     DemoState state = demo();
     state.step(100);
-    const double time = state.simulation.time();
+    const double time = state.simulation().time();
     ASSERT_FALSE(state.change({"springs.shear.stiffness=250", "forces.wind=[1,0,2]",
                                "solver.integrator=rk4", "tearing.max_stretch=2"}));
-    const Scene& scene = state.simulation.scene();
+    const Scene& scene = state.simulation().scene();
     EXPECT_EQ(scene.shear.stiffness, 250.0);
-    EXPECT_EQ(state.simulation.cloth().find_group(SpringFamily::shear)->stiffness, 250.0);
+    EXPECT_EQ(state.simulation().cloth().find_group(SpringFamily::shear)->stiffness, 250.0);
     EXPECT_EQ(scene.forces.wind, (Vec3d{1.0, 0.0, 2.0}));
-    EXPECT_EQ(state.simulation.force_field().wind, Vec3(1.0, 0.0, 2.0));
-    EXPECT_EQ(state.simulation.integrator(), Integrator::rk4);
+    EXPECT_EQ(state.simulation().force_field().wind, Vec3(1.0, 0.0, 2.0));
+    EXPECT_EQ(state.simulation().integrator(), Integrator::rk4);
     EXPECT_EQ(scene.tear_max_stretch, 2.0);
-    EXPECT_EQ(state.simulation.time(), time);  // the same cloth, still running
+    EXPECT_EQ(state.simulation().time(), time);  // the same cloth, still running
 }
 
 TEST(DemoState, AnEditOfTheGridBuildsANewCloth) {
     DemoState state = demo();
     ASSERT_FALSE(state.change({"cloth.rows=10", "cloth.cols=7"}));
-    EXPECT_EQ(state.simulation.cloth().particle_count(), 70u);
+    EXPECT_EQ(state.simulation().cloth().particle_count(), 70u);
     EXPECT_EQ(state.step(10), 10);
 }
 
@@ -126,15 +126,15 @@ TEST(DemoState, ApplyingTheRunningParametersChangesNothingBitForBit) {
         ASSERT_FALSE(state->change({"solver.integrator=verlet"}));
     edited.step(100);
     untouched.step(100);
-    ASSERT_EQ(hash_state(edited.simulation.cloth()), hash_state(untouched.simulation.cloth()));
+    ASSERT_EQ(hash_state(edited.simulation().cloth()), hash_state(untouched.simulation().cloth()));
     ASSERT_FALSE(edited.change({}));
     ASSERT_FALSE(edited.change({"solver.dt=0.00025"}));  // the value it already has
     edited.step(1);
     untouched.step(1);
-    ASSERT_EQ(hash_state(edited.simulation.cloth()), hash_state(untouched.simulation.cloth()));
+    ASSERT_EQ(hash_state(edited.simulation().cloth()), hash_state(untouched.simulation().cloth()));
     edited.step(300);
     untouched.step(300);
-    EXPECT_EQ(hash_state(edited.simulation.cloth()), hash_state(untouched.simulation.cloth()));
+    EXPECT_EQ(hash_state(edited.simulation().cloth()), hash_state(untouched.simulation().cloth()));
 }
 
 TEST(DemoState, ASceneThatFailsToLoadLeavesTheRunningOneUntouched) {
@@ -143,24 +143,24 @@ TEST(DemoState, ASceneThatFailsToLoadLeavesTheRunningOneUntouched) {
     std::ofstream(bad) << "[cloth]\nrows = 10\nspacing = -1\n";
     DemoState state = demo();
     state.step(50);
-    const Scene before = state.simulation.scene();
-    const std::uint64_t hash = hash_state(state.simulation.cloth());
+    const Scene before = state.simulation().scene();
+    const std::uint64_t hash = hash_state(state.simulation().cloth());
     const std::string path_before = state.scene_path;
     std::string error;
     EXPECT_FALSE(state.load_scene(bad.string(), error));
     EXPECT_NE(error.find("bad.toml:3:"), std::string::npos) << error;
-    EXPECT_TRUE(state.simulation.scene() == before);
-    EXPECT_EQ(hash_state(state.simulation.cloth()), hash);
+    EXPECT_TRUE(state.simulation().scene() == before);
+    EXPECT_EQ(hash_state(state.simulation().cloth()), hash);
     EXPECT_EQ(state.scene_path, path_before);
     EXPECT_FALSE(state.load_scene((folder.path / "missing.toml").string(), error));
-    EXPECT_TRUE(state.simulation.scene() == before);
+    EXPECT_TRUE(state.simulation().scene() == before);
 }
 
 TEST(DemoState, ColliderEditsAreCheckedAndAppliedLive) {
     DemoState state = demo("sheet_on_sphere.toml");
     state.step(200);
-    const Scene before = state.simulation.scene();
-    const std::uint64_t hash = hash_state(state.simulation.cloth());
+    const Scene before = state.simulation().scene();
+    const std::uint64_t hash = hash_state(state.simulation().cloth());
     for (auto spoil :
          {+[](ColliderSpec& c) { c.restitution = 1.5; },
           +[](ColliderSpec& c) { c.friction = -0.1; }, +[](ColliderSpec& c) { c.radius = 0.0; },
@@ -168,35 +168,35 @@ TEST(DemoState, ColliderEditsAreCheckedAndAppliedLive) {
         Scene wanted = before;
         spoil(wanted.colliders[0]);
         EXPECT_TRUE(state.change_scene(wanted).has_value());
-        EXPECT_TRUE(state.simulation.scene() == before);
-        EXPECT_EQ(hash_state(state.simulation.cloth()), hash);
+        EXPECT_TRUE(state.simulation().scene() == before);
+        EXPECT_EQ(hash_state(state.simulation().cloth()), hash);
     }
     Scene wanted = before;
     wanted.colliders[0].response = ContactResponse::repulsion;
     wanted.colliders[0].friction = 0.9;
     ASSERT_FALSE(state.change_scene(wanted));
-    EXPECT_EQ(state.simulation.colliders()[0].response, ContactResponse::repulsion);
-    EXPECT_EQ(state.simulation.colliders()[0].friction, 0.9);
-    EXPECT_EQ(hash_state(state.simulation.cloth()), hash);  // same cloth, still running
+    EXPECT_EQ(state.simulation().colliders()[0].response, ContactResponse::repulsion);
+    EXPECT_EQ(state.simulation().colliders()[0].friction, 0.9);
+    EXPECT_EQ(hash_state(state.simulation().cloth()), hash);  // same cloth, still running
 }
 
 TEST(DemoState, AMovedSphereCarriesTheClothWithoutLettingItThrough) {
     DemoState state = demo("sheet_on_sphere.toml");
     state.step(3000);  // draped
-    const Collider start = state.simulation.colliders()[0];
+    const Collider start = state.simulation().colliders()[0];
     for (int frame = 0; frame < 120; ++frame) {  // 2 s at 60 frames/s, 0.4 m/s straight up
         state.move_collider(0, {0.0, 0.4 / 60.0, 0.0});
         state.step(33);
-        const Collider& sphere = state.simulation.colliders()[0];
-        for (const Vec3& x : state.simulation.cloth().positions)
+        const Collider& sphere = state.simulation().colliders()[0];
+        for (const Vec3& x : state.simulation().cloth().positions)
             ASSERT_GE(glm::length(x - sphere.center), sphere.radius * (1.0 - 1e-9)) << frame;
     }
-    const Collider& moved = state.simulation.colliders()[0];
+    const Collider& moved = state.simulation().colliders()[0];
     EXPECT_NEAR(moved.center.y - start.center.y, 0.8, 1e-9);
-    EXPECT_EQ(state.simulation.scene().colliders[0].center[1], moved.center.y);
+    EXPECT_EQ(state.simulation().scene().colliders[0].center[1], moved.center.y);
     double mean_y = 0.0;
-    for (const Vec3& x : state.simulation.cloth().positions) mean_y += x.y;
-    mean_y /= static_cast<double>(state.simulation.cloth().particle_count());
+    for (const Vec3& x : state.simulation().cloth().positions) mean_y += x.y;
+    mean_y /= static_cast<double>(state.simulation().cloth().particle_count());
     EXPECT_GT(mean_y, start.center.y + 0.2);  // the cloth rode up with it
 }
 
@@ -260,11 +260,11 @@ TEST(DemoState, DragsFarOutsideTheViewAtExtremeSpeedStayFinite) {
     for (int frame = 0; frame < 240; ++frame) {
         state.pull(far_points[frame % 4], view);
         state.step(16);
-        ASSERT_TRUE(finite_state(state.simulation.cloth())) << "frame " << frame;
+        ASSERT_TRUE(finite_state(state.simulation().cloth())) << "frame " << frame;
     }
     state.let_go();
     state.step(2000);
-    EXPECT_TRUE(finite_state(state.simulation.cloth()));
+    EXPECT_TRUE(finite_state(state.simulation().cloth()));
 }
 
 // A hand taken far beyond the sheet's reach: the cloth slips from it (sim/drag.h), the window
@@ -284,8 +284,8 @@ TEST(DemoState, AHandFarBeyondTheSheetsReachLosesItAndSaysSo) {
     EXPECT_TRUE(said) << state.message;
     EXPECT_EQ(state.message_tone, Tone::info);
     EXPECT_TRUE(ascii_only(state.message)) << state.message;
-    EXPECT_FALSE(state.simulation.drag().active());
-    EXPECT_EQ(state.recovery.recoveries, 0);
+    EXPECT_FALSE(state.simulation().drag().active());
+    EXPECT_EQ(state.main_run().recovery.recoveries, 0);
 }
 
 // The issue: a right-drag well past both edges of the hanging sheet left one spring, and the
@@ -300,7 +300,7 @@ TEST(DemoState, ASlowStrokeAcrossTheSwingingSheetLeavesNoSpringJoiningThePieces)
             DemoState state = demo();
             state.step(3000);
             float top = 1e9f, bottom = -1e9f, left = 1e9f, right = -1e9f;
-            for (const auto& p : particles_on_screen(state.simulation.cloth(), state.rig.camera(),
+            for (const auto& p : particles_on_screen(state.simulation().cloth(), state.rig.camera(),
                                                      view.width, view.height)) {
                 ASSERT_TRUE(p.has_value());
                 top = std::min(top, p->y), bottom = std::max(bottom, p->y);
@@ -318,7 +318,7 @@ TEST(DemoState, ASlowStrokeAcrossTheSwingingSheetLeavesNoSpringJoiningThePieces)
             }
             state.end_cut();
             state.step(500);
-            const ClothPieces pieces = cloth_pieces(state.simulation.cloth());
+            const ClothPieces pieces = cloth_pieces(state.simulation().cloth());
             EXPECT_GE(pieces.pieces_with_triangles, 2u) << height << " " << direction;
             EXPECT_EQ(pieces.joining_springs, 0u) << height << " " << direction;
         }
@@ -339,41 +339,41 @@ TEST(DemoState, CuttingEverySpringLeavesACloudThatFalls) {
         cut += state.cut_to({static_cast<float>(x), view.height + 10.0f}, view);
         state.end_cut();
     }
-    const std::size_t left = state.simulation.cloth().spring_count();
+    const std::size_t left = state.simulation().cloth().spring_count();
     EXPECT_GT(cut, 10 * left) << cut << " cut, " << left << " left";
-    state.simulation.cut_springs([](const Spring&) { return true; });
-    EXPECT_EQ(state.simulation.cloth().spring_count(), 0u);
-    EXPECT_TRUE(state.simulation.cloth().topology().triangles.empty());
+    state.simulation().cut_springs([](const Spring&) { return true; });
+    EXPECT_EQ(state.simulation().cloth().spring_count(), 0u);
+    EXPECT_TRUE(state.simulation().cloth().topology().triangles.empty());
     EXPECT_FALSE(state.grab(view_centre, view));  // nothing left to hold
     const double mean_height_before = [&] {
         double sum = 0.0;
-        for (const Vec3& x : state.simulation.cloth().positions) sum += x.y;
+        for (const Vec3& x : state.simulation().cloth().positions) sum += x.y;
         return sum;
     }();
     EXPECT_EQ(state.step(500), 500);
     double sum = 0.0;
-    for (const Vec3& x : state.simulation.cloth().positions) sum += x.y;
+    for (const Vec3& x : state.simulation().cloth().positions) sum += x.y;
     EXPECT_LT(sum, mean_height_before);  // free particles fall
-    EXPECT_TRUE(finite_state(state.simulation.cloth()));
+    EXPECT_TRUE(finite_state(state.simulation().cloth()));
 }
 
 TEST(DemoState, PinningEveryParticleFreezesTheClothAndUnpinningFreesIt) {
     DemoState state = demo();
     state.step(300);  // swinging
-    for (std::size_t p = 0; p < state.simulation.cloth().particle_count(); ++p)
-        state.simulation.set_pinned(p, true);
-    const std::vector<Vec3> frozen = state.simulation.cloth().positions;
+    for (std::size_t p = 0; p < state.simulation().cloth().particle_count(); ++p)
+        state.simulation().set_pinned(p, true);
+    const std::vector<Vec3> frozen = state.simulation().cloth().positions;
     for (Integrator integrator :
          {Integrator::explicit_euler, Integrator::verlet, Integrator::velocity_verlet,
           Integrator::rk4, Integrator::implicit_euler, Integrator::symplectic_euler}) {
-        state.simulation.set_integrator(integrator);
+        state.simulation().set_integrator(integrator);
         EXPECT_EQ(state.step(20), 20);
-        EXPECT_EQ(state.simulation.cloth().positions, frozen) << integrator_name(integrator);
+        EXPECT_EQ(state.simulation().cloth().positions, frozen) << integrator_name(integrator);
     }
     state.release_all_pins();
     EXPECT_EQ(state.step(300), 300);
-    EXPECT_NE(state.simulation.cloth().positions, frozen);
-    EXPECT_TRUE(finite_state(state.simulation.cloth()));
+    EXPECT_NE(state.simulation().cloth().positions, frozen);
+    EXPECT_TRUE(finite_state(state.simulation().cloth()));
 }
 
 TEST(DemoState, AOnePixelViewAndBackDrawsAndGrabsSafely) {
@@ -382,16 +382,16 @@ TEST(DemoState, AOnePixelViewAndBackDrawsAndGrabsSafely) {
     raster::Framebuffer framebuffer(1, 1);
     for (ViewSize size : {ViewSize{1, 1}, ViewSize{800, 600}, ViewSize{1, 600}, ViewSize{1, 1}}) {
         framebuffer.resize(size.width, size.height);
-        view::render_frame(framebuffer, state.rig.camera(), state.simulation.cloth(),
-                           state.cloth_view, state.frame_options, state.ground_height,
-                           state.simulation.colliders());
+        view::render_frame(framebuffer, state.rig.camera(), state.simulation().cloth(),
+                           state.main_run().cloth_view, state.frame_options, state.ground_height,
+                           state.simulation().colliders());
         EXPECT_EQ(framebuffer.colours().size(), static_cast<std::size_t>(size.width) * size.height);
         state.grab({0.5f, 0.5f}, size);
         state.pull({0.5f, 0.4f}, size);
         state.step(5);
         state.let_go();
     }
-    EXPECT_TRUE(finite_state(state.simulation.cloth()));
+    EXPECT_TRUE(finite_state(state.simulation().cloth()));
 }
 
 TEST(DemoState, StiffnessAndDtPushedByOrdersOfMagnitudeRecoverAndKeepTheUsersChoice) {
@@ -402,21 +402,21 @@ TEST(DemoState, StiffnessAndDtPushedByOrdersOfMagnitudeRecoverAndKeepTheUsersCho
     int frames_until_stable = -1;
     for (int frame = 0; frame < 400 && frames_until_stable < 0; ++frame) {
         const int taken = state.step(60);
-        ASSERT_TRUE(finite_state(state.simulation.cloth())) << "frame " << frame;
-        if (taken == 60 && state.recovery.recoveries > 0) frames_until_stable = frame;
+        ASSERT_TRUE(finite_state(state.simulation().cloth())) << "frame " << frame;
+        if (taken == 60 && state.main_run().recovery.recoveries > 0) frames_until_stable = frame;
     }
-    EXPECT_GE(state.recovery.recoveries, 1);
+    EXPECT_GE(state.main_run().recovery.recoveries, 1);
     EXPECT_GE(frames_until_stable, 0) << "never settled on a stable dt";
     // The user's stiffness stands; dt came down to where the linear estimate says it holds.
-    EXPECT_EQ(state.simulation.scene().structural.stiffness, 100000.0);
-    EXPECT_EQ(state.simulation.cloth().find_group(SpringFamily::structural)->stiffness, 100000.0);
-    EXPECT_LE(state.simulation.dt(),
-              2.0 * estimated_step_limit(state.simulation.cloth(),
-                                         state.simulation.force_field().air_drag,
-                                         state.simulation.integrator()));
+    EXPECT_EQ(state.simulation().scene().structural.stiffness, 100000.0);
+    EXPECT_EQ(state.simulation().cloth().find_group(SpringFamily::structural)->stiffness, 100000.0);
+    EXPECT_LE(state.simulation().dt(),
+              2.0 * estimated_step_limit(state.simulation().cloth(),
+                                         state.simulation().force_field().air_drag,
+                                         state.simulation().integrator()));
     // And it keeps running, finite, while recovery retries the chosen 10 ms ever more rarely.
     for (int frame = 0; frame < 20; ++frame) state.step(60);
-    EXPECT_TRUE(finite_state(state.simulation.cloth()));
+    EXPECT_TRUE(finite_state(state.simulation().cloth()));
 }
 
 TEST(DemoState, HopelessParametersRestartTheSceneInsteadOfStalling) {
@@ -428,13 +428,13 @@ TEST(DemoState, HopelessParametersRestartTheSceneInsteadOfStalling) {
     bool restarted = false;
     for (int frame = 0; frame < 200 && !restarted; ++frame) {
         state.step(50);
-        ASSERT_TRUE(finite_state(state.simulation.cloth()));
-        ASSERT_GE(state.simulation.dt(), smallest_recovery_dt);
+        ASSERT_TRUE(finite_state(state.simulation().cloth()));
+        ASSERT_GE(state.simulation().dt(), smallest_recovery_dt);
         restarted = state.message.find("restarted") != std::string::npos;
     }
     EXPECT_TRUE(restarted);
-    EXPECT_EQ(state.simulation.dt(), state.scene.solver.dt);
-    EXPECT_EQ(state.simulation.scene().structural.stiffness, 1e300);  // still the user's choice
+    EXPECT_EQ(state.simulation().dt(), state.scene.solver.dt);
+    EXPECT_EQ(state.simulation().scene().structural.stiffness, 1e300);  // still the user's choice
 }
 
 // Restarting for ever is no answer either (1,465 divergence lines in one run): after three
@@ -464,7 +464,7 @@ TEST(DemoState, HopelessParametersPauseAfterThreeRestartsInARow) {
     state.toggle_pause();
     for (int frame = 0; frame < 60; ++frame) ASSERT_EQ(state.step(4), 4);
     EXPECT_FALSE(state.paused);
-    EXPECT_TRUE(finite_state(state.simulation.cloth()));
+    EXPECT_TRUE(finite_state(state.simulation().cloth()));
 }
 
 TEST(DemoState, SwitchingIntegratorsEveryStepStaysSound) {
@@ -475,8 +475,8 @@ TEST(DemoState, SwitchingIntegratorsEveryStepStaysSound) {
         ASSERT_FALSE(state.change({std::string("solver.integrator=") + names[s % 6]}));
         ASSERT_EQ(state.step(1), 1) << names[s % 6] << " at step " << s << ": " << state.message;
     }
-    EXPECT_EQ(state.recovery.recoveries, 0);
-    EXPECT_TRUE(finite_state(state.simulation.cloth()));
+    EXPECT_EQ(state.main_run().recovery.recoveries, 0);
+    EXPECT_TRUE(finite_state(state.simulation().cloth()));
 }
 
 TEST(DemoState, MassByOrdersOfMagnitudeMidRunStaysFiniteOrRecovers) {
@@ -485,7 +485,7 @@ TEST(DemoState, MassByOrdersOfMagnitudeMidRunStaysFiniteOrRecovers) {
         ASSERT_FALSE(state.change({std::string("cloth.particle_mass=") + mass}));
         for (int frame = 0; frame < 30; ++frame) {
             state.step(20);
-            ASSERT_TRUE(finite_state(state.simulation.cloth())) << mass;
+            ASSERT_TRUE(finite_state(state.simulation().cloth())) << mass;
         }
     }
 }
@@ -498,10 +498,11 @@ void diverge_once(DemoState& state) {
     ASSERT_FALSE(state.change({"cloth.particle_mass=0.000015"}));
     for (int frame = 0; frame < 100; ++frame) {
         state.step(16);
-        if (state.recovery.recoveries > 0 && state.companions[0].recovery.recoveries > 0) break;
+        if (state.main_run().recovery.recoveries > 0 && state.runs[1].recovery.recoveries > 0)
+            break;
     }
-    ASSERT_GE(state.recovery.recoveries, 1);
-    ASSERT_GE(state.companions[0].recovery.recoveries, 1);
+    ASSERT_GE(state.main_run().recovery.recoveries, 1);
+    ASSERT_GE(state.runs[1].recovery.recoveries, 1);
 }
 
 TEST(DemoState, AfterARollbackDtGrowsBackToTheChosenOneOnceStepsAreSound) {
@@ -511,23 +512,23 @@ TEST(DemoState, AfterARollbackDtGrowsBackToTheChosenOneOnceStepsAreSound) {
     // The particles' mass back as the scene has it: 0.25 ms holds again.
     // The edit does not name dt, so the halved dt it carries is not a new choice.
     ASSERT_FALSE(state.change({"cloth.particle_mass=0.0005"}));
-    const Simulation& copy = state.companions[0].simulation;
-    ASSERT_LT(state.simulation.dt(), 0.00025);
+    const Simulation& copy = state.runs[1].simulation;
+    ASSERT_LT(state.simulation().dt(), 0.00025);
     ASSERT_LT(copy.dt(), 0.0002);
-    const int recoveries = state.recovery.recoveries;
+    const int recoveries = state.main_run().recovery.recoveries;
     // Sound for half a second at each dt, then doubled: at most three doublings (0.25 ms down
     // to an eighth) and 1.5 s; 3 s of simulated time is ample.
-    const double healed_by = state.simulation.time() + 3.0;
+    const double healed_by = state.simulation().time() + 3.0;
     bool said_restored = false;
-    while (state.simulation.time() < healed_by) {
+    while (state.simulation().time() < healed_by) {
         ASSERT_EQ(state.step(16), 16) << state.message;
         said_restored |= state.message.find("dt restored to 0.25 ms") != std::string::npos;
     }
-    EXPECT_EQ(state.recovery.recoveries, recoveries);
-    EXPECT_EQ(state.simulation.dt(), 0.00025);  // exactly: doubling undoes halving
+    EXPECT_EQ(state.main_run().recovery.recoveries, recoveries);
+    EXPECT_EQ(state.simulation().dt(), 0.00025);  // exactly: doubling undoes halving
     EXPECT_EQ(copy.dt(), 0.0002);
     EXPECT_TRUE(said_restored);
-    EXPECT_EQ(state.simulation.scene().solver.dt, 0.00025);  // what a saved scene would say
+    EXPECT_EQ(state.simulation().scene().solver.dt, 0.00025);  // what a saved scene would say
 }
 
 TEST(DemoState, DtDoesNotGrowBeforeHalfASecondOfSoundSteps) {
@@ -535,12 +536,13 @@ TEST(DemoState, DtDoesNotGrowBeforeHalfASecondOfSoundSteps) {
     state.add_companion(Integrator::symplectic_euler, 0.00025);
     diverge_once(state);
     ASSERT_FALSE(state.change({"cloth.particle_mass=0.0005"}));
-    const double halved = state.simulation.dt();
-    const double rolled_back_to = state.simulation.time() - state.recovery.sound_seconds;
-    while (state.simulation.time() < rolled_back_to + 0.45) state.step(1);
-    EXPECT_EQ(state.simulation.dt(), halved);
-    while (state.simulation.time() < rolled_back_to + 0.55) state.step(1);
-    EXPECT_EQ(state.simulation.dt(), 2.0 * halved);
+    const double halved = state.simulation().dt();
+    const double rolled_back_to =
+        state.simulation().time() - state.main_run().recovery.sound_seconds;
+    while (state.simulation().time() < rolled_back_to + 0.45) state.step(1);
+    EXPECT_EQ(state.simulation().dt(), halved);
+    while (state.simulation().time() < rolled_back_to + 0.55) state.step(1);
+    EXPECT_EQ(state.simulation().dt(), 2.0 * halved);
 }
 
 TEST(DemoState, ResetRestoresTheChosenDtAndClearsTheRecoveries) {
@@ -552,14 +554,14 @@ TEST(DemoState, ResetRestoresTheChosenDtAndClearsTheRecoveries) {
     ASSERT_FALSE(state.change_companion(0, {"solver.dt=0.0016"}));
     diverge_once(state);  // the light particles stay: dt stays halved until R
     ASSERT_FALSE(state.change_companion(0, {"solver.integrator=verlet"}));
-    ASSERT_LT(state.simulation.dt(), 0.0008);
-    ASSERT_LT(state.companions[0].simulation.dt(), 0.0016);
+    ASSERT_LT(state.simulation().dt(), 0.0008);
+    ASSERT_LT(state.runs[1].simulation.dt(), 0.0016);
     state.reset_simulation();
-    EXPECT_EQ(state.simulation.dt(), 0.0008);
-    EXPECT_EQ(state.companions[0].simulation.dt(), 0.0016);
-    EXPECT_EQ(state.recovery.recoveries, 0);
-    EXPECT_EQ(state.companions[0].recovery.recoveries, 0);
-    EXPECT_EQ(state.simulation.time(), 0.0);
+    EXPECT_EQ(state.simulation().dt(), 0.0008);
+    EXPECT_EQ(state.runs[1].simulation.dt(), 0.0016);
+    EXPECT_EQ(state.main_run().recovery.recoveries, 0);
+    EXPECT_EQ(state.runs[1].recovery.recoveries, 0);
+    EXPECT_EQ(state.simulation().time(), 0.0);
 }
 
 TEST(DemoState, ParametersThatCannotHoldTheChosenDtAreRetriedEverMoreRarely) {
@@ -568,12 +570,12 @@ TEST(DemoState, ParametersThatCannotHoldTheChosenDtAreRetriedEverMoreRarely) {
     // wait before the next (0.5, 1, 2, 4 s), so 8 s of simulated time see at most 5 rollbacks
     // past the first few halvings, where a fixed half-second wait would see one a second.
     ASSERT_FALSE(state.change({"cloth.particle_mass=0.000015"}));
-    while (state.simulation.time() < 1.0) state.step(16);
-    const int settled = state.recovery.recoveries;
-    const double from = state.simulation.time();
-    while (state.simulation.time() < from + 8.0) state.step(16);
-    EXPECT_LE(state.recovery.recoveries - settled, 5);
-    EXPECT_TRUE(finite_state(state.simulation.cloth()));
+    while (state.simulation().time() < 1.0) state.step(16);
+    const int settled = state.main_run().recovery.recoveries;
+    const double from = state.simulation().time();
+    while (state.simulation().time() < from + 8.0) state.step(16);
+    EXPECT_LE(state.main_run().recovery.recoveries - settled, 5);
+    EXPECT_TRUE(finite_state(state.simulation().cloth()));
 }
 
 // ---- what the window says -----------------------------------------------------------------------
@@ -586,8 +588,9 @@ bool ascii_only(const std::string& text) {
 TEST(DemoState, ADivergenceIsSaidAsAProblemInTextTheWindowsFontDraws) {
     DemoState state = demo();
     ASSERT_FALSE(state.change({"cloth.particle_mass=0.000015"}));  // 0.25 ms is past its limit
-    for (int frame = 0; frame < 100 && state.recovery.recoveries == 0; ++frame) state.step(16);
-    ASSERT_GE(state.recovery.recoveries, 1);
+    for (int frame = 0; frame < 100 && state.main_run().recovery.recoveries == 0; ++frame)
+        state.step(16);
+    ASSERT_GE(state.main_run().recovery.recoveries, 1);
     EXPECT_NE(state.message.find("rolled back"), std::string::npos) << state.message;
     EXPECT_EQ(state.message_tone, Tone::problem);
     // The window's font has glyphs for ASCII only: an em dash was drawn as "?".

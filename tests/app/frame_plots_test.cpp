@@ -55,7 +55,7 @@ TEST(Pausing, ResumingDoesNotRushToCatchUpThePausedTime) {
     for (int frame = 0; frame < 120; ++frame) run_frame(state);  // two seconds paused
     state.toggle_pause();
     // One frame's worth of steps (and a fifth more for an uneven frame), not two seconds'.
-    EXPECT_LE(run_frame(state), static_cast<int>(1.2 / 60.0 / state.simulation.dt()));
+    EXPECT_LE(run_frame(state), static_cast<int>(1.2 / 60.0 / state.simulation().dt()));
 }
 
 TEST(FramePlots, EveryPlotHoldsStillWhilePaused) {
@@ -70,7 +70,7 @@ TEST(FramePlots, EveryPlotHoldsStillWhilePaused) {
     run_frame(state, 0.004, 0.006);
     ASSERT_EQ(samples(state), 2u);
     const FramePlots& plots = state.statistics.plots;
-    const Simulation& sim = state.simulation;
+    const Simulation& sim = state.simulation();
     EXPECT_EQ(plots.energy.latest(),
               static_cast<float>(measure_energy(sim.cloth(), sim.force_field()).total()));
     EXPECT_EQ(plots.stretch_percent.latest(),
@@ -86,7 +86,7 @@ TEST(FramePlots, TheLargestStretchIsMeasuredEveryFramePausedOrNot) {
     DemoState state = demo();
     state.toggle_pause();
     run_frame(state);
-    EXPECT_EQ(state.statistics.stretch_ratio, largest_stretch_ratio(state.simulation.cloth()));
+    EXPECT_EQ(state.statistics.stretch_ratio, largest_stretch_ratio(state.simulation().cloth()));
 }
 
 TEST(PlotHistory, KeepsTheLastSamplesOldestFirst) {

@@ -22,13 +22,13 @@ namespace {
 // the panel says it.
 template <class Edit>
 std::string refused(DemoState& state, Edit edit) {
-    const Scene before = state.simulation.scene();
-    const std::uint64_t hash = hash_state(state.simulation.cloth());
+    const Scene before = state.simulation().scene();
+    const std::uint64_t hash = hash_state(state.simulation().cloth());
     const float fov = state.rig.fov_degrees;
     const std::optional<std::string> error = edit(state);
     EXPECT_TRUE(error.has_value());
-    EXPECT_TRUE(state.simulation.scene() == before);
-    EXPECT_EQ(hash_state(state.simulation.cloth()), hash);
+    EXPECT_TRUE(state.simulation().scene() == before);
+    EXPECT_EQ(hash_state(state.simulation().cloth()), hash);
     EXPECT_EQ(state.rig.fov_degrees, fov);
     return error ? refusal_text(*error) : std::string();
 }
@@ -38,7 +38,7 @@ std::string refused(DemoState& state, Edit edit) {
 // allowed is taken.
 TEST(PanelEdits, ADtTheWindowCannotStepIsRefused) {
     DemoState state = demo();
-    state.add_companion(Integrator::rk4, state.simulation.dt());
+    state.add_companion(Integrator::rk4, state.simulation().dt());
     for (const double dt : {1e6, 0.5, std::nextafter(StepClock::max_dt, 1.0)}) {
         const std::string why = refused(state, [&](DemoState& s) {
             return s.edit({{SceneKey::dt, dt}});
@@ -47,17 +47,17 @@ TEST(PanelEdits, ADtTheWindowCannotStepIsRefused) {
         EXPECT_TRUE(state.edit_companion(0, {{SceneKey::dt, dt}}).has_value());
     }
     EXPECT_FALSE(state.edit({{SceneKey::dt, StepClock::max_dt}}));
-    EXPECT_EQ(state.simulation.dt(), StepClock::max_dt);
+    EXPECT_EQ(state.simulation().dt(), StepClock::max_dt);
     EXPECT_FALSE(state.edit_companion(0, {{SceneKey::dt, StepClock::max_dt}}));
 }
 
 TEST(PanelEdits, GravityIsAVectorCheckedAndAppliedLive) {
     DemoState state = demo();
     state.step(50);
-    const double time = state.simulation.time();
+    const double time = state.simulation().time();
     ASSERT_FALSE(state.change({"forces.gravity=[1.5,-3,0.25]"}));
-    EXPECT_EQ(state.simulation.force_field().gravity, Vec3(1.5, -3.0, 0.25));
-    EXPECT_EQ(state.simulation.time(), time);  // the same cloth, still running
+    EXPECT_EQ(state.simulation().force_field().gravity, Vec3(1.5, -3.0, 0.25));
+    EXPECT_EQ(state.simulation().time(), time);  // the same cloth, still running
     for (const char* bad : {"forces.gravity=[0,-9.81]", "forces.gravity=[0,nan,0]"})
         refused(state, [&](DemoState& s) { return s.change({bad}); });
 }
@@ -65,7 +65,7 @@ TEST(PanelEdits, GravityIsAVectorCheckedAndAppliedLive) {
 TEST(PanelEdits, TheWindHasAVerticalPart) {
     DemoState state = demo();
     ASSERT_FALSE(state.change({"forces.wind=[1,2.5,0]"}));
-    EXPECT_EQ(state.simulation.force_field().wind, Vec3(1.0, 2.5, 0.0));
+    EXPECT_EQ(state.simulation().force_field().wind, Vec3(1.0, 2.5, 0.0));
 }
 
 TEST(PanelEdits, TheFieldOfViewIsCheckedLikeASceneFile) {
@@ -83,24 +83,24 @@ TEST(PanelEdits, TheFieldOfViewIsCheckedLikeASceneFile) {
 TEST(PanelEdits, AColliderMovesAndResizesAndABadPlaceIsRefused) {
     DemoState state = demo("tablecloth.toml");
     state.step(20);
-    Scene wanted = state.simulation.scene();
+    Scene wanted = state.simulation().scene();
     ASSERT_EQ(wanted.colliders.size(), 2u);
     wanted.colliders[0].center = {0.1, 0.15, -0.05};
     wanted.colliders[0].radius = 0.4;
     wanted.colliders[1].point = {0.0, -0.5, 0.0};
     ASSERT_FALSE(state.change_scene(wanted));
-    const Collider& sphere = state.simulation.colliders()[0];
+    const Collider& sphere = state.simulation().colliders()[0];
     EXPECT_EQ(sphere.center, Vec3(0.1, 0.15, -0.05));
     EXPECT_EQ(sphere.radius, 0.4);
-    EXPECT_EQ(state.simulation.colliders()[1].point, Vec3(0.0, -0.5, 0.0));
-    Scene bad = state.simulation.scene();
+    EXPECT_EQ(state.simulation().colliders()[1].point, Vec3(0.0, -0.5, 0.0));
+    Scene bad = state.simulation().scene();
     bad.colliders[0].radius = -0.1;
     refused(state, [&](DemoState& s) { return s.change_scene(bad); });
 }
 
 TEST(PanelEdits, ApplyRebuildsTheGridAsDrafted) {
     DemoState state = demo();
-    ClothSpec draft = state.simulation.scene().cloth;
+    ClothSpec draft = state.simulation().scene().cloth;
     draft.rows = 9;
     draft.cols = 13;
     draft.spacing = 0.04;
@@ -109,9 +109,9 @@ TEST(PanelEdits, ApplyRebuildsTheGridAsDrafted) {
     draft.pin_preset = PinPreset::list;
     draft.pin_list = {{0, 0}, {8, 12}};
     ASSERT_FALSE(state.edit(grid_edits(draft)));
-    const Scene& scene = state.simulation.scene();
+    const Scene& scene = state.simulation().scene();
     EXPECT_TRUE(scene.cloth == draft);
-    const Cloth& cloth = state.simulation.cloth();
+    const Cloth& cloth = state.simulation().cloth();
     ASSERT_EQ(cloth.particle_count(), 9u * 13u);
     EXPECT_TRUE(cloth.is_pinned(0));
     EXPECT_TRUE(cloth.is_pinned(9 * 13 - 1));
@@ -120,7 +120,7 @@ TEST(PanelEdits, ApplyRebuildsTheGridAsDrafted) {
     for (PinPreset preset : {PinPreset::none, PinPreset::top_row, PinPreset::top_corners}) {
         draft.pin_preset = preset;
         ASSERT_FALSE(state.edit(grid_edits(draft)));
-        EXPECT_EQ(state.simulation.scene().cloth.pin_preset, preset);
+        EXPECT_EQ(state.simulation().scene().cloth.pin_preset, preset);
     }
 }
 
@@ -128,21 +128,21 @@ TEST(PanelEdits, ApplyingTheRunningGridChangesNothingBitForBit) {
     DemoState applied = demo(), untouched = demo();
     applied.step(100);
     untouched.step(100);
-    ASSERT_FALSE(applied.edit(grid_edits(applied.simulation.scene().cloth)));
+    ASSERT_FALSE(applied.edit(grid_edits(applied.simulation().scene().cloth)));
     applied.step(100);
     untouched.step(100);
-    EXPECT_EQ(hash_state(applied.simulation.cloth()), hash_state(untouched.simulation.cloth()));
+    EXPECT_EQ(hash_state(applied.simulation().cloth()), hash_state(untouched.simulation().cloth()));
 }
 
 TEST(PanelEdits, AHugeGridIsRefusedAtOnceWithTheLimit) {
     DemoState state = demo();
-    ClothSpec draft = state.simulation.scene().cloth;
+    ClothSpec draft = state.simulation().scene().cloth;
     draft.rows = 100000;
     draft.cols = 100000;
-    const std::size_t particles_before = state.simulation.cloth().particle_count();
+    const std::size_t particles_before = state.simulation().cloth().particle_count();
     const std::string why = refused(state, [&](DemoState& s) { return s.edit(grid_edits(draft)); });
     // Refused by the count, before anything is built: the running sheet is the one it was.
-    EXPECT_EQ(state.simulation.cloth().particle_count(), particles_before);
+    EXPECT_EQ(state.simulation().cloth().particle_count(), particles_before);
     EXPECT_NE(why.find("more than the limit of " + std::to_string(max_particles)),
               std::string::npos)
         << why;
@@ -153,13 +153,13 @@ TEST(PanelEdits, AHugeGridIsRefusedAtOnceWithTheLimit) {
 TEST(PanelEdits, AGridTheWindowCannotStepIsRefusedAndTheSheetKept) {
     DemoState state = demo();
     state.step(20);
-    ClothSpec draft = state.simulation.scene().cloth;
+    ClothSpec draft = state.simulation().scene().cloth;
     draft.rows = 2048;
     draft.cols = 2048;
     ASSERT_LE(grid_particle_count(draft), max_particles);  // a scene file may have it
-    const std::size_t particles_before = state.simulation.cloth().particle_count();
+    const std::size_t particles_before = state.simulation().cloth().particle_count();
     const std::string why = refused(state, [&](DemoState& s) { return apply_grid(s, draft); });
-    EXPECT_EQ(state.simulation.cloth().particle_count(), particles_before);
+    EXPECT_EQ(state.simulation().cloth().particle_count(), particles_before);
     EXPECT_NE(
         why.find("more than the window's limit of " + std::to_string(max_window_grid_particles)),
         std::string::npos)
@@ -178,23 +178,23 @@ TEST(PanelEdits, AGridTheWindowCannotStepIsRefusedAndTheSheetKept) {
     draft.rows = static_cast<int>(max_window_grid_particles);
     draft.cols = 1;
     ASSERT_FALSE(apply_grid(state, draft));
-    EXPECT_EQ(state.simulation.cloth().particle_count(),
+    EXPECT_EQ(state.simulation().cloth().particle_count(),
               static_cast<std::size_t>(max_window_grid_particles));
 }
 
 TEST(PanelEdits, ABadGridIsRefusedAndSaysWhy) {
     DemoState state = demo();
-    ClothSpec draft = state.simulation.scene().cloth;
+    ClothSpec draft = state.simulation().scene().cloth;
     draft.pin_preset = PinPreset::list;
     draft.pin_list = {{0, 23}};
     draft.cols = 10;  // the pin falls outside
     EXPECT_NE(
         refused(state, [&](DemoState& s) { return s.edit(grid_edits(draft)); }).find("outside"),
         std::string::npos);
-    draft = state.simulation.scene().cloth;
+    draft = state.simulation().scene().cloth;
     draft.rows = 0;
     refused(state, [&](DemoState& s) { return s.edit(grid_edits(draft)); });
-    draft = state.simulation.scene().cloth;
+    draft = state.simulation().scene().cloth;
     draft.spacing = -0.05;
     refused(state, [&](DemoState& s) { return s.edit(grid_edits(draft)); });
 }

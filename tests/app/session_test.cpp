@@ -65,7 +65,7 @@ TEST(Session, AReplayEndsInTheRecordedStateBitForBit) {
     DemoState recorder = demo();
     recorder.start_recording();
     play_a_busy_session(recorder);
-    EXPECT_GE(recorder.recovery.recoveries, 1);  // the session included a recovery
+    EXPECT_GE(recorder.main_run().recovery.recoveries, 1);  // the session included a recovery
     const SessionRecord recorded = recorder.stop_recording();
     ASSERT_GT(recorded.events.size(), 40u);
 
@@ -80,16 +80,16 @@ TEST(Session, AReplayEndsInTheRecordedStateBitForBit) {
     int frames = 0;
     while (!player.replay_finished() && frames++ < 100000) player.step(50);
     EXPECT_TRUE(player.replay_matches());
-    EXPECT_EQ(hash_state(player.simulation.cloth()), recorded.final_state_hash);
+    EXPECT_EQ(hash_state(player.simulation().cloth()), recorded.final_state_hash);
     EXPECT_EQ(player.steps_run, recorded.steps);
 
     // The hand and the panel wait while a replay runs, and come back after it.
-    const std::uint64_t replayed = hash_state(player.simulation.cloth());
+    const std::uint64_t replayed = hash_state(player.simulation().cloth());
     player.reset_simulation();
     player.start_cut({0.0f, 0.0f}, view);
     player.cut_to({800.0f, 600.0f}, view);
     EXPECT_TRUE(player.change({"springs.structural.stiffness=100"}).has_value());
-    EXPECT_EQ(hash_state(player.simulation.cloth()), replayed);
+    EXPECT_EQ(hash_state(player.simulation().cloth()), replayed);
     player.stop_replay();
     EXPECT_FALSE(player.change({"springs.structural.stiffness=100"}).has_value());
 }
@@ -234,15 +234,15 @@ TEST(Session, AMalformedRecordingIsRefusedWithAPosition) {
 TEST(SideBySide, ACopyWithTheSameMethodStaysIdenticalThroughTheSameHand) {
     DemoState state = demo();
     state.step(2000);
-    state.add_companion(state.simulation.integrator(), state.simulation.dt());
-    state.add_companion(Integrator::rk4, 0.5 * state.simulation.dt());
+    state.add_companion(state.simulation().integrator(), state.simulation().dt());
+    state.add_companion(Integrator::rk4, 0.5 * state.simulation().dt());
     ASSERT_TRUE(state.grab({400.0f, 300.0f}, view, 1));  // picked on the copy: goes to all
     for (int move = 0; move < 30; ++move) {
         state.pull(
             {400.0f - 5.0f * static_cast<float>(move), 300.0f + 3.0f * static_cast<float>(move)},
             view);
         state.step(16);
-        EXPECT_TRUE(state.companions[1].simulation.drag().active());
+        EXPECT_TRUE(state.runs[2].simulation.drag().active());
     }
     state.let_go();
     state.start_cut({350.0f, 250.0f}, view, 2);
@@ -250,46 +250,46 @@ TEST(SideBySide, ACopyWithTheSameMethodStaysIdenticalThroughTheSameHand) {
     state.toggle_pin({400.0f, 300.0f}, view);
     ASSERT_FALSE(state.change({"springs.structural.stiffness=600"}));
     state.step(200);
-    const Simulation& twin = state.companions[0].simulation;
-    const Simulation& rk4 = state.companions[1].simulation;
-    EXPECT_EQ(hash_state(twin.cloth()), hash_state(state.simulation.cloth()));
-    EXPECT_EQ(twin.cloth().spring_count(), state.simulation.cloth().spring_count());
+    const Simulation& twin = state.runs[1].simulation;
+    const Simulation& rk4 = state.runs[2].simulation;
+    EXPECT_EQ(hash_state(twin.cloth()), hash_state(state.simulation().cloth()));
+    EXPECT_EQ(twin.cloth().spring_count(), state.simulation().cloth().spring_count());
     // The rk4 copy kept its own method and dt, took the same material, and keeps time.
     EXPECT_EQ(rk4.integrator(), Integrator::rk4);
-    EXPECT_EQ(rk4.dt(), 0.5 * state.simulation.dt());
+    EXPECT_EQ(rk4.dt(), 0.5 * state.simulation().dt());
     EXPECT_EQ(rk4.scene().structural.stiffness, 600.0);
-    EXPECT_NEAR(rk4.time(), state.simulation.time(), 0.5 * rk4.dt());
-    EXPECT_NE(hash_state(rk4.cloth()), hash_state(state.simulation.cloth()));
+    EXPECT_NEAR(rk4.time(), state.simulation().time(), 0.5 * rk4.dt());
+    EXPECT_NE(hash_state(rk4.cloth()), hash_state(state.simulation().cloth()));
 }
 
 TEST(SideBySide, ACopyThatRollsBackCatchesUpWithoutStallingAFrame) {
     DemoState state = demo();
     // Explicit Euler at 4 ms on this sheet diverges; its copy rolls back and halves its dt.
     state.add_companion(Integrator::explicit_euler, 0.004);
-    const Simulation& copy = state.companions[0].simulation;
+    const Simulation& copy = state.runs[1].simulation;
     for (int frame = 0; frame < 300; ++frame) {
         const double before = copy.time();
         const double copy_dt = copy.dt();
         state.step(16);
-        const double most = 16 * (std::ceil(state.simulation.dt() / copy_dt) + 1) * copy_dt;
+        const double most = 16 * (std::ceil(state.simulation().dt() / copy_dt) + 1) * copy_dt;
         ASSERT_LE(copy.time() - before, most + 1e-12) << "frame " << frame;
-        ASSERT_LE(copy.time(), state.simulation.time() + 0.5 * copy.dt() + 1e-12);
+        ASSERT_LE(copy.time(), state.simulation().time() + 0.5 * copy.dt() + 1e-12);
     }
-    EXPECT_GE(state.companions[0].recovery.recoveries, 1);
-    EXPECT_NEAR(copy.time(), state.simulation.time(), copy.dt());  // caught up in the end
+    EXPECT_GE(state.runs[1].recovery.recoveries, 1);
+    EXPECT_NEAR(copy.time(), state.simulation().time(), copy.dt());  // caught up in the end
 }
 
 TEST(SideBySide, ACopyChangesOnlyItsOwnSolver) {
     DemoState state = demo();
     state.add_companion(Integrator::verlet, 0.001);
     EXPECT_FALSE(state.change_companion(0, {"solver.integrator=rk4", "solver.dt=0.002"}));
-    EXPECT_EQ(state.companions[0].simulation.integrator(), Integrator::rk4);
-    EXPECT_EQ(state.companions[0].simulation.dt(), 0.002);
-    EXPECT_EQ(state.simulation.integrator(), Integrator::symplectic_euler);
-    const Scene before = state.companions[0].simulation.scene();
+    EXPECT_EQ(state.runs[1].simulation.integrator(), Integrator::rk4);
+    EXPECT_EQ(state.runs[1].simulation.dt(), 0.002);
+    EXPECT_EQ(state.simulation().integrator(), Integrator::symplectic_euler);
+    const Scene before = state.runs[1].simulation.scene();
     EXPECT_TRUE(state.change_companion(0, {"springs.structural.stiffness=5"}));
     EXPECT_TRUE(state.change_companion(0, {"solver.dt=0"}));
-    EXPECT_TRUE(state.companions[0].simulation.scene() == before);
+    EXPECT_TRUE(state.runs[1].simulation.scene() == before);
     EXPECT_TRUE(state.change_companion(3, {"solver.dt=0.001"}));
 }
 
@@ -305,7 +305,7 @@ std::vector<Scene> play_slider_ticks(DemoState& state) {
     std::vector<Scene> after_each;  // the running scene after each change
     auto change = [&](const std::vector<SceneEdit>& edits) {
         ASSERT_FALSE(state.edit(edits));
-        after_each.push_back(state.simulation.scene());
+        after_each.push_back(state.simulation().scene());
         state.step(3);
     };
     for (int tick = 0; tick < 200; ++tick)
@@ -362,8 +362,8 @@ TEST(Session, AFormatOneRecordingOfWholeScenesStillReplaysBitForBit) {
     player.start_replay(*read);
     while (!player.replay_finished()) player.step(64);
     EXPECT_TRUE(player.replay_matches());
-    EXPECT_EQ(hash_state(player.simulation.cloth()), typed.final_state_hash);
-    EXPECT_EQ(player.simulation.cloth().rows, 14);
+    EXPECT_EQ(hash_state(player.simulation().cloth()), typed.final_state_hash);
+    EXPECT_EQ(player.simulation().cloth().rows, 14);
 }
 
 }  // namespace

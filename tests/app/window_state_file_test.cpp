@@ -28,7 +28,7 @@ TEST(WindowStateFile, SaysTheFramesStepsTimeAndHandOfTheMainRun) {
     const std::string text = window_state_text(42, state);
     EXPECT_EQ(value_of(text, "frames"), "42");
     EXPECT_EQ(value_of(text, "steps"), "7");
-    EXPECT_EQ(std::stod(value_of(text, "time")), state.simulation.time());  // every digit
+    EXPECT_EQ(std::stod(value_of(text, "time")), state.simulation().time());  // every digit
     EXPECT_EQ(value_of(text, "paused"), "0");
     EXPECT_EQ(value_of(text, "held"), "0");
     state.toggle_pause();

@@ -363,7 +363,7 @@ int main(int argc, char** argv) {
                 held.clear();
                 followers.clear();
                 if (hold ==
-                    "patch") {  // weft's drag.cpp: weight (1-(d/r)^2)^2 >= 1/2 held, below follows
+                    "patch") {  // weft's grab.cpp: weight (1-(d/r)^2)^2 >= 1/2 held, below follows
                     // Centred on Jolt's own grabbed vertex (Jolt's sheet hangs elsewhere than
                     // weft's).
                     const Vec3 centre = x[size_t(e.particle)];

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "sim/build/topology_edits.h"
-#include "sim/interaction/drag.h"
+#include "sim/interaction/grab.h"
 
 namespace weft::app {
 
@@ -55,13 +55,13 @@ EventResult apply_event(Simulation& simulation, const ClothEvent& event,
     switch (event.kind) {
         case ClothEvent::Kind::grab:
             if (event.hit.particle < particles)
-                simulation.start_drag(grab_cloth(simulation.cloth(), event.hit, event.radius));
+                simulation.start_grab(grab_cloth(simulation.cloth(), event.hit, event.radius));
             return EventResult::applied;
         case ClothEvent::Kind::pull:
-            if (simulation.drag().active()) simulation.move_drag_target(event.target);
+            if (simulation.grab().active()) simulation.pull_to(event.target);
             return EventResult::applied;
         case ClothEvent::Kind::let_go:
-            if (simulation.drag().active()) simulation.end_drag();
+            if (simulation.grab().active()) simulation.let_go();
             return EventResult::applied;
         case ClothEvent::Kind::cut:
             if (!event.springs.empty())

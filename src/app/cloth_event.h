@@ -20,7 +20,7 @@ struct ClothEvent {
     enum class Kind : std::uint8_t {
         grab,          // hit, radius: take hold of the cloth
         pull,          // target: move the held point
-        let_go,        // release the drag; the cloth keeps its velocity
+        let_go,        // let go of the cloth; the cloth keeps its velocity
         cut,           // springs: remove these springs (edge keys) and their triangles
         pin,           // particle
         unpin,         // particle

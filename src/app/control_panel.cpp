@@ -224,7 +224,7 @@ void comparison(DemoState& state) {
     integrator_combo(new_integrator, "##new");
     ImGui::SameLine();
     if (ImGui::Button("add a copy beside"))
-        state.add_companion(static_cast<Integrator>(new_integrator), state.simulation().dt());
+        state.add_copy(static_cast<Integrator>(new_integrator), state.simulation().dt());
     for (std::size_t c = 0; c + 1 < state.runs.size(); ++c) {
         ImGui::PushID(static_cast<int>(c) + 100);
         const Simulation& copy = state.runs[c + 1].simulation;
@@ -232,13 +232,14 @@ void comparison(DemoState& state) {
         int current = static_cast<int>(copy.integrator());
         const std::string control = "copy." + std::to_string(c);
         if (integrator_combo(current))
-            answer_edit(control, state.edit_companion(c, {{SceneKey::integrator,
-                                                           static_cast<Integrator>(current)}}));
+            answer_edit(
+                control,
+                state.edit_copy(c, {{SceneKey::integrator, static_cast<Integrator>(current)}}));
         double dt_ms = copy.dt() * 1e3;
         if (slider_log("dt (ms)", dt_ms, 0.01, 10.0))
-            answer_edit(control, state.edit_companion(c, {{SceneKey::dt, dt_ms * 1e-3}}));
+            answer_edit(control, state.edit_copy(c, {{SceneKey::dt, dt_ms * 1e-3}}));
         refusal_below(control);
-        if (ImGui::Button("remove")) state.remove_companion(c);
+        if (ImGui::Button("remove")) state.remove_copy(c);
         ImGui::PopID();
     }
 }
@@ -298,16 +299,16 @@ void limits(DemoState& state) {
                      &Scene::strain_limit_max_strain, 0.1, 0.01, 0.5, "");
     optional_feature(state, "self-collision", SceneKey::self_collision_thickness,
                      &Scene::self_collision_thickness, 0.01, 0.002, 0.1, " m");
-    double radius = state.drag_radius;
-    if (slider_log("drag radius (m)", radius, 0.005, 0.5)) {
+    double radius = state.grab_radius;
+    if (slider_log("grab radius (m)", radius, 0.005, 0.5)) {
         const bool taken = radius > 0.0 && radius <= 10.0;
-        if (taken) state.drag_radius = radius;
-        answer_edit("drag_radius",
+        if (taken) state.grab_radius = radius;
+        answer_edit("grab_radius",
                     taken ? std::nullopt
-                          : std::optional<std::string>("drag radius must be in (0, 10] m, got " +
+                          : std::optional<std::string>("grab radius must be in (0, 10] m, got " +
                                                        format_number(radius)));
     }
-    refusal_below("drag_radius");
+    refusal_below("grab_radius");
     if (ImGui::Button("release all pins (U)")) state.release_all_pins();
 }
 

@@ -110,7 +110,7 @@ int DemoState::step(int steps) {
         // The main run speaks last, so its message is the one on screen.
         if (sound && !why.empty()) say(why, Tone::info);  // dt grew back
         if (!sound) {
-            hand.dragging = false;
+            hand.pulling = false;
             main_run().cloth_view = view::ClothView(simulation().cloth());
             say(why, Tone::problem);
             if (main_run().recovery.hopeless()) pause_hopeless(main_run().recovery, "the scene");
@@ -185,18 +185,18 @@ const Simulation& DemoState::run(int index) const {
                                               : runs[static_cast<std::size_t>(index)].simulation;
 }
 
-void DemoState::add_companion(Integrator integrator, double dt) {
+void DemoState::add_copy(Integrator integrator, double dt) {
     runs.push_back(new_run(simulation(), dt));
     runs.back().simulation.set_integrator(integrator);
     runs.back().simulation.set_dt(dt);
 }
 
-void DemoState::remove_companion(std::size_t index) {
+void DemoState::remove_copy(std::size_t index) {
     if (index + 1 < runs.size()) runs.erase(runs.begin() + static_cast<long>(index + 1));
 }
 
-std::optional<std::string> DemoState::edit_companion(std::size_t index,
-                                                     const std::vector<SceneEdit>& edits) {
+std::optional<std::string> DemoState::edit_copy(std::size_t index,
+                                                const std::vector<SceneEdit>& edits) {
     if (index + 1 >= runs.size()) return "no copy " + std::to_string(index + 1);
     for (const SceneEdit& edit : edits)
         if (!is_solver_key(edit.key))
@@ -213,11 +213,11 @@ std::optional<std::string> DemoState::edit_companion(std::size_t index,
     return std::nullopt;
 }
 
-std::optional<std::string> DemoState::change_companion(std::size_t index,
-                                                       const std::vector<std::string>& texts) {
+std::optional<std::string> DemoState::change_copy(std::size_t index,
+                                                  const std::vector<std::string>& texts) {
     std::vector<SceneEdit> edits;
     if (auto error = read_overrides(texts, edits)) return error;
-    return edit_companion(index, edits);
+    return edit_copy(index, edits);
 }
 
 // ---- the hand -----------------------------------------------------------------------------------
@@ -270,7 +270,7 @@ void DemoState::apply_to_all_runs(const ClothEvent& event) {
         for (DemoRun& run : runs) run.recovery.restarts_in_a_row = 0;
         ground_height = view::ground_height_below(simulation().cloth(), simulation().colliders());
     }
-    if (event.kind == ClothEvent::Kind::let_go) hand.dragging = false;
+    if (event.kind == ClothEvent::Kind::let_go) hand.pulling = false;
 }
 
 bool DemoState::grab(const glm::vec2& cursor, ViewSize view, int run_index) {
@@ -281,18 +281,18 @@ bool DemoState::grab(const glm::vec2& cursor, ViewSize view, int run_index) {
     ClothEvent event;
     event.kind = ClothEvent::Kind::grab;
     event.hit = *hit;
-    event.radius = drag_radius;
+    event.radius = grab_radius;
     perform(event);
     hand_hint = false;
-    hand.dragging = simulation().drag().active();
+    hand.pulling = simulation().grab().active();
     hand.anchor = hit->point;
-    return hand.dragging;
+    return hand.pulling;
 }
 
 void DemoState::pull(const glm::vec2& cursor, ViewSize view) {
-    if (!hand.dragging || !simulation().drag().active()) return;
+    if (!hand.pulling || !simulation().grab().active()) return;
     auto target = point_on_grab_plane(rig.camera(), view.width, view.height, cursor, hand.anchor);
-    if (!target || *target == simulation().drag().target) return;  // nothing new to record
+    if (!target || *target == simulation().grab().target) return;  // nothing new to record
     ClothEvent event;
     event.kind = ClothEvent::Kind::pull;
     event.target = *target;
@@ -300,8 +300,8 @@ void DemoState::pull(const glm::vec2& cursor, ViewSize view) {
 }
 
 void DemoState::let_go() {
-    if (hand.dragging) perform(plain_event(ClothEvent::Kind::let_go));
-    hand.dragging = false;
+    if (hand.pulling) perform(plain_event(ClothEvent::Kind::let_go));
+    hand.pulling = false;
 }
 
 void DemoState::start_cut(const glm::vec2& cursor, ViewSize view, int run_index) {

@@ -50,8 +50,8 @@ enum class Tone { info, success, problem };
 
 // What the mouse and the space bar are doing to the cloth.
 struct Hand {
-    bool dragging = false;
-    Vec3 anchor{0.0};  // m, the grabbed point: the drag plane goes through it
+    bool pulling = false;
+    Vec3 anchor{0.0};  // m, the grabbed point: the grab plane goes through it
     bool cutting = false;
     glm::vec2 last_cursor{0.0f};  // px, where the cut stroke was at the last motion
     // The particles in the window at the last motion, for a stroke's run: a cut judges how
@@ -103,7 +103,7 @@ struct DemoState {
     // The one-line hint on the view (how to pull, cut, pin), shown until the hand is first
     // used: a grab, a cut or a pin.
     bool hand_hint = true;
-    double drag_radius = 0.08;  // m
+    double grab_radius = 0.08;  // m
 
     // Steps run since the scene (re)started, diverged ones included: the clock events are
     // recorded and replayed by.
@@ -134,16 +134,15 @@ struct DemoState {
     int run_count() const { return static_cast<int>(runs.size()); }
     const Simulation& run(int index) const;
     // A copy starting from the main run's current state with another integrator and dt.
-    void add_companion(Integrator integrator, double dt);
+    void add_copy(Integrator integrator, double dt);
     // Copy `index` (0: the first copy, run 1) goes.
-    void remove_companion(std::size_t index);
+    void remove_copy(std::size_t index);
     // Edits copy `index`'s own solver (solver.integrator, solver.dt), checked; the copy is not
     // recorded (a replay has no copies unless asked for).
-    std::optional<std::string> edit_companion(std::size_t index,
-                                              const std::vector<SceneEdit>& edits);
+    std::optional<std::string> edit_copy(std::size_t index, const std::vector<SceneEdit>& edits);
     // The same from --set style overrides ("solver.integrator=rk4", "solver.dt=0.0005").
-    std::optional<std::string> change_companion(std::size_t index,
-                                                const std::vector<std::string>& texts);
+    std::optional<std::string> change_copy(std::size_t index,
+                                           const std::vector<std::string>& texts);
 
     // The hand, at a cursor in a view of the given size showing run `run_index`. grab()
     // takes hold only where the cursor is on that run's cloth; the event then goes to every

@@ -86,7 +86,7 @@ struct Window {
     // two never run at once).
     WorkerPool draw_pool{default_thread_count()};
     bool save_window_next_frame = false;
-    int hand_column = 0;  // the column a drag or cut started in: it goes on in its coordinates
+    int hand_column = 0;  // the column a pull or cut started in: it goes on in its coordinates
     bool panel_folded = false;  // the panel shows only its title bar (as of the last frame)
     WindowLayout layout;        // this frame's: where the panel and the view are
 };
@@ -499,8 +499,8 @@ int run_demo_window(const CommandLine& command_line, const char* default_scene_p
     state.captures = captures_folder();
     state.main_run().recovery.profiling = true;  // the panel's step profile
     for (const CommandLine::Comparison& comparison : command_line.comparisons)
-        state.add_companion(*integrator_from_name(comparison.integrator),
-                            comparison.dt > 0.0 ? comparison.dt : scene->solver.dt);
+        state.add_copy(*integrator_from_name(comparison.integrator),
+                       comparison.dt > 0.0 ? comparison.dt : scene->solver.dt);
     if (replay) state.start_replay(*replay);
     if (command_line.record_path) state.start_recording();
     Window w;

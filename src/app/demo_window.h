@@ -1,5 +1,5 @@
 // The interactive demo: an SDL2 window showing weft's own CPU-rendered frames, with the
-// keyboard camera, dragging, cutting, pins, the parameter panel and divergence recovery.
+// keyboard camera, pulling, cutting, pins, the parameter panel and divergence recovery.
 // The only part of weft that includes SDL.
 #pragma once
 

@@ -324,8 +324,8 @@ int run_headless_replay(const CommandLine& command_line) {
     SceneLoadResult scene = load_scene_text(record->scene_toml, path);  // checked when read
     app::DemoState state(path, {}, *scene.scene);
     for (const CommandLine::Comparison& comparison : command_line.comparisons)
-        state.add_companion(*integrator_from_name(comparison.integrator),
-                            comparison.dt > 0.0 ? comparison.dt : scene.scene->solver.dt);
+        state.add_copy(*integrator_from_name(comparison.integrator),
+                       comparison.dt > 0.0 ? comparison.dt : scene.scene->solver.dt);
     state.main_run().recovery.profiling = command_line.profile;
     state.start_replay(*record);
     std::optional<FrameWriter> frames;

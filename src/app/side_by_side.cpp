@@ -36,7 +36,7 @@ void render_columns(raster::Framebuffer& framebuffer, std::vector<raster::Frameb
     if (runs.size() == 1) {
         view::render_frame(framebuffer, camera, runs[0].simulation->cloth(), *runs[0].cloth_view,
                            options, ground_height, runs[0].simulation->colliders(), pool);
-        view::draw_hand_marker(framebuffer, camera, runs[0].simulation->drag(),
+        view::draw_hand_marker(framebuffer, camera, runs[0].simulation->grab(),
                                runs[0].simulation->cloth());
         return;
     }
@@ -50,7 +50,7 @@ void render_columns(raster::Framebuffer& framebuffer, std::vector<raster::Frameb
         const Simulation& simulation = *runs[run].simulation;
         view::render_frame(column, camera, simulation.cloth(), *runs[run].cloth_view, options,
                            ground_height, simulation.colliders(), pool);
-        view::draw_hand_marker(column, camera, simulation.drag(), simulation.cloth());
+        view::draw_hand_marker(column, camera, simulation.grab(), simulation.cloth());
         const int left = static_cast<int>(run) * column_width;
         const int copied = std::min(column_width, framebuffer.width() - left);
         for (int y = 0; y < height && copied > 0; ++y)

@@ -13,7 +13,7 @@ std::string window_state_text(long long frames_drawn, const DemoState& state) {
         << "steps " << state.simulation().steps_taken() << '\n'
         << "time " << state.simulation().time() << '\n'
         << "paused " << (state.paused ? 1 : 0) << '\n'
-        << "held " << (state.simulation().drag().active() ? 1 : 0) << '\n';
+        << "held " << (state.simulation().grab().active() ? 1 : 0) << '\n';
     return out.str();
 }
 

@@ -6,12 +6,12 @@
 #include "raster/camera.h"
 #include "raster/framebuffer.h"
 #include "sim/core/cloth.h"
-#include "sim/interaction/drag.h"
+#include "sim/interaction/grab.h"
 
 namespace weft::view {
 
 // Draws nothing while the hand holds nothing.
 void draw_hand_marker(raster::Framebuffer& framebuffer, const raster::Camera& camera,
-                      const DragHandle& drag, const Cloth& cloth);
+                      const Grab& grab, const Cloth& cloth);
 
 }  // namespace weft::view

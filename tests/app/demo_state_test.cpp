@@ -284,7 +284,7 @@ TEST(DemoState, AHandFarBeyondTheSheetsReachLosesItAndSaysSo) {
     EXPECT_TRUE(said) << state.message;
     EXPECT_EQ(state.message_tone, Tone::info);
     EXPECT_TRUE(ascii_only(state.message)) << state.message;
-    EXPECT_FALSE(state.simulation().drag().active());
+    EXPECT_FALSE(state.simulation().grab().active());
     EXPECT_EQ(state.main_run().recovery.recoveries, 0);
 }
 
@@ -507,7 +507,7 @@ void diverge_once(DemoState& state) {
 
 TEST(DemoState, AfterARollbackDtGrowsBackToTheChosenOneOnceStepsAreSound) {
     DemoState state = demo();  // 0.25 ms, the scene's
-    state.add_companion(Integrator::velocity_verlet, 0.0002);
+    state.add_copy(Integrator::velocity_verlet, 0.0002);
     diverge_once(state);
     // The particles' mass back as the scene has it: 0.25 ms holds again.
     // The edit does not name dt, so the halved dt it carries is not a new choice.
@@ -533,7 +533,7 @@ TEST(DemoState, AfterARollbackDtGrowsBackToTheChosenOneOnceStepsAreSound) {
 
 TEST(DemoState, DtDoesNotGrowBeforeHalfASecondOfSoundSteps) {
     DemoState state = demo();
-    state.add_companion(Integrator::symplectic_euler, 0.00025);
+    state.add_copy(Integrator::symplectic_euler, 0.00025);
     diverge_once(state);
     ASSERT_FALSE(state.change({"cloth.particle_mass=0.0005"}));
     const double halved = state.simulation().dt();
@@ -547,13 +547,13 @@ TEST(DemoState, DtDoesNotGrowBeforeHalfASecondOfSoundSteps) {
 
 TEST(DemoState, ResetRestoresTheChosenDtAndClearsTheRecoveries) {
     DemoState state = demo();
-    state.add_companion(Integrator::rk4, 0.002);
+    state.add_copy(Integrator::rk4, 0.002);
     // A dt set in the panel is the chosen one from then on, for the main run and a copy; an
     // edit of the copy that does not name dt leaves its choice alone.
     ASSERT_FALSE(state.change({"solver.dt=0.0008"}));
-    ASSERT_FALSE(state.change_companion(0, {"solver.dt=0.0016"}));
+    ASSERT_FALSE(state.change_copy(0, {"solver.dt=0.0016"}));
     diverge_once(state);  // the light particles stay: dt stays halved until R
-    ASSERT_FALSE(state.change_companion(0, {"solver.integrator=verlet"}));
+    ASSERT_FALSE(state.change_copy(0, {"solver.integrator=verlet"}));
     ASSERT_LT(state.simulation().dt(), 0.0008);
     ASSERT_LT(state.runs[1].simulation.dt(), 0.0016);
     state.reset_simulation();

@@ -56,8 +56,8 @@ TEST(EditAnswer, ANewRefusalIsBroughtIntoSightOnceAndATakenEditNever) {
 }
 
 TEST(EditAnswer, AMessageWithoutTheCommandLinesLeadIsKeptWhole) {
-    EXPECT_EQ(refusal_text("drag radius must be in (0, 10] m, got 20"),
-              "refused: drag radius must be in (0, 10] m, got 20");
+    EXPECT_EQ(refusal_text("grab radius must be in (0, 10] m, got 20"),
+              "refused: grab radius must be in (0, 10] m, got 20");
     EXPECT_EQ(refusal_text("error: panel: colliders[0].restitution must be in [0, 1], got 1.5"),
               "refused: panel: colliders[0].restitution must be in [0, 1], got 1.5");
 }

@@ -38,17 +38,17 @@ std::string refused(DemoState& state, Edit edit) {
 // allowed is taken.
 TEST(PanelEdits, ADtTheWindowCannotStepIsRefused) {
     DemoState state = demo();
-    state.add_companion(Integrator::rk4, state.simulation().dt());
+    state.add_copy(Integrator::rk4, state.simulation().dt());
     for (const double dt : {1e6, 0.5, std::nextafter(StepClock::max_dt, 1.0)}) {
         const std::string why = refused(state, [&](DemoState& s) {
             return s.edit({{SceneKey::dt, dt}});
         });
         EXPECT_NE(why.find("solver.dt: at most 100 ms in the window"), std::string::npos) << why;
-        EXPECT_TRUE(state.edit_companion(0, {{SceneKey::dt, dt}}).has_value());
+        EXPECT_TRUE(state.edit_copy(0, {{SceneKey::dt, dt}}).has_value());
     }
     EXPECT_FALSE(state.edit({{SceneKey::dt, StepClock::max_dt}}));
     EXPECT_EQ(state.simulation().dt(), StepClock::max_dt);
-    EXPECT_FALSE(state.edit_companion(0, {{SceneKey::dt, StepClock::max_dt}}));
+    EXPECT_FALSE(state.edit_copy(0, {{SceneKey::dt, StepClock::max_dt}}));
 }
 
 TEST(PanelEdits, GravityIsAVectorCheckedAndAppliedLive) {

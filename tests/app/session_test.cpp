@@ -234,15 +234,15 @@ TEST(Session, AMalformedRecordingIsRefusedWithAPosition) {
 TEST(SideBySide, ACopyWithTheSameMethodStaysIdenticalThroughTheSameHand) {
     DemoState state = demo();
     state.step(2000);
-    state.add_companion(state.simulation().integrator(), state.simulation().dt());
-    state.add_companion(Integrator::rk4, 0.5 * state.simulation().dt());
+    state.add_copy(state.simulation().integrator(), state.simulation().dt());
+    state.add_copy(Integrator::rk4, 0.5 * state.simulation().dt());
     ASSERT_TRUE(state.grab({400.0f, 300.0f}, view, 1));  // picked on the copy: goes to all
     for (int move = 0; move < 30; ++move) {
         state.pull(
             {400.0f - 5.0f * static_cast<float>(move), 300.0f + 3.0f * static_cast<float>(move)},
             view);
         state.step(16);
-        EXPECT_TRUE(state.runs[2].simulation.drag().active());
+        EXPECT_TRUE(state.runs[2].simulation.grab().active());
     }
     state.let_go();
     state.start_cut({350.0f, 250.0f}, view, 2);
@@ -265,7 +265,7 @@ TEST(SideBySide, ACopyWithTheSameMethodStaysIdenticalThroughTheSameHand) {
 TEST(SideBySide, ACopyThatRollsBackCatchesUpWithoutStallingAFrame) {
     DemoState state = demo();
     // Explicit Euler at 4 ms on this sheet diverges; its copy rolls back and halves its dt.
-    state.add_companion(Integrator::explicit_euler, 0.004);
+    state.add_copy(Integrator::explicit_euler, 0.004);
     const Simulation& copy = state.runs[1].simulation;
     for (int frame = 0; frame < 300; ++frame) {
         const double before = copy.time();
@@ -281,16 +281,16 @@ TEST(SideBySide, ACopyThatRollsBackCatchesUpWithoutStallingAFrame) {
 
 TEST(SideBySide, ACopyChangesOnlyItsOwnSolver) {
     DemoState state = demo();
-    state.add_companion(Integrator::verlet, 0.001);
-    EXPECT_FALSE(state.change_companion(0, {"solver.integrator=rk4", "solver.dt=0.002"}));
+    state.add_copy(Integrator::verlet, 0.001);
+    EXPECT_FALSE(state.change_copy(0, {"solver.integrator=rk4", "solver.dt=0.002"}));
     EXPECT_EQ(state.runs[1].simulation.integrator(), Integrator::rk4);
     EXPECT_EQ(state.runs[1].simulation.dt(), 0.002);
     EXPECT_EQ(state.simulation().integrator(), Integrator::symplectic_euler);
     const Scene before = state.runs[1].simulation.scene();
-    EXPECT_TRUE(state.change_companion(0, {"springs.structural.stiffness=5"}));
-    EXPECT_TRUE(state.change_companion(0, {"solver.dt=0"}));
+    EXPECT_TRUE(state.change_copy(0, {"springs.structural.stiffness=5"}));
+    EXPECT_TRUE(state.change_copy(0, {"solver.dt=0"}));
     EXPECT_TRUE(state.runs[1].simulation.scene() == before);
-    EXPECT_TRUE(state.change_companion(3, {"solver.dt=0.001"}));
+    EXPECT_TRUE(state.change_copy(3, {"solver.dt=0.001"}));
 }
 
 }  // namespace

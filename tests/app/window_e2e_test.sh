@@ -205,7 +205,7 @@ check grep -q "matches the recording" <<<"$replay_output"
 check cmp -s "$work/side/state.csv" "$work/side/replayed.csv"
 
 # --- a hard drag at one implicit Euler step a frame -------------------------------------------
-# The hand's particles are constraints inside the implicit system (src/sim/interaction/drag.h): a pull
+# The hand's particles are constraints inside the implicit system (src/sim/interaction/grab.h): a pull
 # away from the pinned top row and back past it, faster than the cloth can follow, must not
 # diverge (no rollback, so dt is never halved). Particle (1, 1) is at (-0.325, 0.35) m:
 # pixel (419, 169), one spacing from a pin, so the hand soon pulls a spring at it past the

@@ -1,5 +1,5 @@
 // Determinism: the same scene and input give the same state, bit for bit, run after run —
-// tearing and dragging included.
+// tearing and pulling included.
 #include <gtest/gtest.h>
 
 #include <utility>
@@ -27,10 +27,10 @@ std::uint64_t final_hash(Integrator integrator, int threads = 1) {
     const std::uint32_t corner =
         static_cast<std::uint32_t>(simulation.cloth().particle_count() - 1);
     const Vec3 start = simulation.cloth().positions[corner];
-    simulation.start_drag(grab_cloth(simulation.cloth(), {0, corner, 1.0, start}, 0.1));
+    simulation.start_grab(grab_cloth(simulation.cloth(), {0, corner, 1.0, start}, 0.1));
     std::size_t torn = 0;
     for (int frame = 0; frame < 120; ++frame) {
-        simulation.move_drag_target(start + Vec3(0.02 * frame, -0.03 * frame, 0.01 * frame));
+        simulation.pull_to(start + Vec3(0.02 * frame, -0.03 * frame, 0.01 * frame));
         for (int s = 0; s < 66; ++s) {
             const StepReport report = simulation.step();
             torn += report.springs_torn;

@@ -17,7 +17,7 @@
 #include "sim/core/state_hash.h"
 #include "sim/grid/grid_force_pass.h"
 #include "sim/integrators/integrator.h"
-#include "sim/interaction/drag.h"
+#include "sim/interaction/grab.h"
 #include "sim/scene_io/scene_loader.h"
 #include "test_scenes.h"
 

@@ -105,8 +105,8 @@ TEST(HardCases, ACornerPulledFastAndFarStaysSoundOrIsCaught) {
     Simulation simulation(scene);
     const std::uint32_t corner = 15 * 16 + 15;
     const Vec3 start = simulation.cloth().positions[corner];
-    simulation.start_drag(grab_cloth(simulation.cloth(), {0, corner, 1.0, start}, 0.1));
-    simulation.move_drag_target(start + Vec3(10.0, -10.0, 10.0));  // 17 m away, at once
+    simulation.start_grab(grab_cloth(simulation.cloth(), {0, corner, 1.0, start}, 0.1));
+    simulation.pull_to(start + Vec3(10.0, -10.0, 10.0));  // 17 m away, at once
     const bool caught = run_watching(simulation, 2000);
     if (!caught) {
         EXPECT_LT(largest_stretch_ratio(simulation.cloth()), runaway_stretch_ratio);

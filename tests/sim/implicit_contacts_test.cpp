@@ -13,7 +13,7 @@
 #include "sim/core/simulation.h"
 #include "sim/core/state_hash.h"
 #include "sim/guards/divergence.h"
-#include "sim/interaction/drag.h"
+#include "sim/interaction/grab.h"
 #include "sim/interaction/picking.h"
 
 namespace weft {
@@ -154,8 +154,8 @@ TEST(ImplicitContacts, TheGroundNeverHoldsASheetPulledOffIt) {
     RayHit hit;
     hit.particle = middle;
     hit.point = simulation.cloth().positions[middle];
-    simulation.start_drag(grab_cloth(simulation.cloth(), hit, 0.05));
-    simulation.move_drag_target(hit.point + Vec3(0.0, 0.2, 0.0));
+    simulation.start_grab(grab_cloth(simulation.cloth(), hit, 0.05));
+    simulation.pull_to(hit.point + Vec3(0.0, 0.2, 0.0));
     for (int s = 0; s < 30; ++s) ASSERT_FALSE(simulation.step().diverged());
     EXPECT_GT(simulation.cloth().positions[middle].y, 0.1);
 }

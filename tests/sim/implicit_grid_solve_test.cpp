@@ -12,7 +12,7 @@
 #include "sim/core/simulation.h"
 #include "sim/core/state_hash.h"
 #include "sim/guards/divergence.h"
-#include "sim/interaction/drag.h"
+#include "sim/interaction/grab.h"
 #include "sim/scene_io/scene_loader.h"
 #include "test_scenes.h"
 
@@ -82,13 +82,13 @@ std::uint64_t implicit_sheet_hash(int threads, const SimulationOptions& options 
     simulation.set_thread_count(threads);
     for (int s = 0; s < 40; ++s) {
         if (s == 10) {
-            DragHandle drag;
-            drag.particles = {40 * 72 + 36, 40 * 72 + 37};
-            drag.weights = {1.0, 0.5};
-            drag.offsets = {Vec3(0.0), Vec3(0.0)};
-            drag.hand = drag.target = simulation.cloth().positions[40 * 72 + 36];
-            simulation.start_drag(drag);
-            simulation.move_drag_target(drag.hand + Vec3(0.0, 1.0, 0.5));
+            Grab grab;
+            grab.particles = {40 * 72 + 36, 40 * 72 + 37};
+            grab.weights = {1.0, 0.5};
+            grab.offsets = {Vec3(0.0), Vec3(0.0)};
+            grab.hand = grab.target = simulation.cloth().positions[40 * 72 + 36];
+            simulation.start_grab(grab);
+            simulation.pull_to(grab.hand + Vec3(0.0, 1.0, 0.5));
         }
         if (simulation.step().diverged()) return 0;
     }
@@ -198,8 +198,8 @@ TEST(ImplicitGridSolve, AHardDragAgainstThePinsNeitherDivergesNorStretchesWithou
     RayHit hit;
     hit.particle = grabbed;
     hit.point = simulation.cloth().positions[grabbed];
-    simulation.start_drag(grab_cloth(simulation.cloth(), hit, 0.08));
-    ASSERT_GT(simulation.drag().particles.size(), 5u);
+    simulation.start_grab(grab_cloth(simulation.cloth(), hit, 0.08));
+    ASSERT_GT(simulation.grab().particles.size(), 5u);
     double largest_stretch = 0.0;
     bool slipped = false;
     Vec3 hand = hit.point;
@@ -209,7 +209,7 @@ TEST(ImplicitGridSolve, AHardDragAgainstThePinsNeitherDivergesNorStretchesWithou
                           Vec3(3.0 * std::cos(angle), -3.0 + std::sin(angle), 3.0);
         const Vec3 ahead = goal - hand;
         hand += std::min(1.0, 0.1 / glm::length(ahead)) * ahead;
-        simulation.move_drag_target(hand);
+        simulation.pull_to(hand);
         const StepReport report = simulation.step();
         ASSERT_FALSE(report.diverged()) << "step " << s << ": " << report.divergence.value_or("");
         slipped = slipped || report.hand_slipped;

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "sim/core/simulation.h"
-#include "sim/interaction/drag.h"
+#include "sim/interaction/grab.h"
 #include "sim/scene_io/scene_loader.h"
 
 namespace weft {
@@ -30,7 +30,7 @@ void grab_bottom_middle(Simulation& simulation, double radius) {
     const Cloth& cloth = simulation.cloth();
     const auto particle =
         static_cast<std::uint32_t>((cloth.rows - 1) * cloth.cols + cloth.cols / 2);
-    simulation.start_drag(grab_cloth(cloth, {0, particle, 1.0, cloth.positions[particle]}, radius));
+    simulation.start_grab(grab_cloth(cloth, {0, particle, 1.0, cloth.positions[particle]}, radius));
 }
 
 bool ran_away(const StepReport& report) {
@@ -69,7 +69,7 @@ TEST(RunawayTearing, AHardDragTearsTheSheetWithoutAnAlarm) {
     // The shipped tearing sheet with its own method and dt, and at a frame-sized implicit
     // step; hands small and large (the panel goes to 0.5 m on a 1.15 m sheet) swung 1 m to
     // either side at 6 m/s or pulled straight down at 3 m/s, far beyond the sheet's reach:
-    // the sheet tears before the grip slips (drag.h).
+    // the sheet tears before the grip slips (grab.h).
     for (const std::vector<std::string>& solver :
          {std::vector<std::string>{},
           {"solver.integrator=implicit-euler", "solver.dt=0.016666666666666666"}}) {
@@ -79,7 +79,7 @@ TEST(RunawayTearing, AHardDragTearsTheSheetWithoutAnAlarm) {
                 Simulation simulation(tearing_sheet(solver));
                 while (simulation.time() < 0.3) ASSERT_FALSE(simulation.step().diverged());
                 grab_bottom_middle(simulation, radius);
-                const Vec3 start = simulation.drag().target;
+                const Vec3 start = simulation.grab().target;
                 int frame = -1;
                 while (simulation.time() < 2.3) {
                     const int now = static_cast<int>(std::floor((simulation.time() - 0.3) * 60.0));
@@ -87,9 +87,9 @@ TEST(RunawayTearing, AHardDragTearsTheSheetWithoutAnAlarm) {
                         frame = now;
                         const double t = frame / 60.0;                      // s
                         const double swing = std::asin(std::sin(6.0 * t));  // ±π/2 at 6 rad/s
-                        simulation.move_drag_target(
-                            start + (flick ? Vec3(swing / (0.5 * 3.14159265), 0.0, 0.0)
-                                           : Vec3(0.0, -3.0 * t, 0.0)));
+                        simulation.pull_to(start + (flick
+                                                        ? Vec3(swing / (0.5 * 3.14159265), 0.0, 0.0)
+                                                        : Vec3(0.0, -3.0 * t, 0.0)));
                     }
                     const StepReport report = simulation.step();
                     torn += report.springs_torn;

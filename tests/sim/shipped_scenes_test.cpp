@@ -13,7 +13,7 @@
 #include "sim/core/simulation.h"
 #include "sim/guards/divergence.h"
 #include "sim/guards/stability_limit.h"
-#include "sim/interaction/drag.h"
+#include "sim/interaction/grab.h"
 #include "sim/scene_io/scene_loader.h"
 
 namespace weft {
@@ -104,11 +104,11 @@ TEST(ShippedScenes, NoneWithTearingIsFlaggedWhileAHandRipsIt) {
         const auto grabbed =
             static_cast<std::uint32_t>((cloth.rows - 1) * cloth.cols + cloth.cols / 2);
         const Vec3 start = cloth.positions[grabbed];
-        simulation.start_drag(grab_cloth(cloth, {0, grabbed, 1.0, start}, 0.5));
+        simulation.start_grab(grab_cloth(cloth, {0, grabbed, 1.0, start}, 0.5));
         std::size_t torn = 0;
         for (int frame = 0; frame < 120; ++frame) {
             const double pulled = frame / 60.0;  // s
-            simulation.move_drag_target(start + pulled * Vec3(0.5, -2.0, 1.0));
+            simulation.pull_to(start + pulled * Vec3(0.5, -2.0, 1.0));
             const double frame_end = simulation.time() + 1.0 / 60.0;
             while (simulation.time() < frame_end) {
                 const StepReport report = simulation.step();

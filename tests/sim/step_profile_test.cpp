@@ -7,7 +7,7 @@
 #include "app/profile_text.h"
 #include "sim/core/simulation.h"
 #include "sim/core/state_hash.h"
-#include "sim/interaction/drag.h"
+#include "sim/interaction/grab.h"
 #include "sim/scene_io/scene_loader.h"
 
 namespace weft {
@@ -34,11 +34,11 @@ struct LiftedSheet {
         for (int step = 0; step < 40; ++step) {
             if (step == 10) {
                 const Vec3 at = simulation.cloth().positions[grabbed];
-                simulation.start_drag(grab_cloth(simulation.cloth(), {0, grabbed, 1.0, at}, 0.08));
+                simulation.start_grab(grab_cloth(simulation.cloth(), {0, grabbed, 1.0, at}, 0.08));
             }
             if (step >= 10)
-                simulation.move_drag_target(simulation.cloth().positions[grabbed] +
-                                            Vec3(0.0, 0.08, 0.03));  // 4.9 m/s up
+                simulation.pull_to(simulation.cloth().positions[grabbed] +
+                                   Vec3(0.0, 0.08, 0.03));  // 4.9 m/s up
             const std::uint64_t evaluations = simulation.force_evaluations();
             const StepReport report = simulation.step();
             ASSERT_FALSE(report.diverged()) << step;

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "sim/build/cloth_builder.h"
-#include "sim/interaction/drag.h"
+#include "sim/interaction/grab.h"
 #include "view/hand_marker.h"
 
 namespace weft::view {
@@ -29,7 +29,7 @@ int marker_pixels_near(const raster::Framebuffer& framebuffer, glm::vec3 window,
 
 struct HeldSheet {
     Cloth cloth;
-    DragHandle drag;
+    Grab grab;
     raster::Camera camera = raster::make_camera({0.3f, -0.3f, 2.0f}, {0.3f, -0.3f, 0.0f}, 50.0f);
     raster::Framebuffer framebuffer{320, 240};
     HeldSheet() {
@@ -38,7 +38,7 @@ struct HeldSheet {
         scene.cloth.spacing = 0.08;
         cloth = build_grid_cloth(scene);
         const std::uint32_t grabbed = 4 * 8 + 4;
-        drag = grab_cloth(cloth, {0, grabbed, 1.0, cloth.positions[grabbed]}, 0.01);
+        grab = grab_cloth(cloth, {0, grabbed, 1.0, cloth.positions[grabbed]}, 0.01);
         framebuffer.clear(background);
     }
     int total() const {
@@ -49,14 +49,14 @@ struct HeldSheet {
 
 TEST(HandMarker, NothingIsDrawnWhileTheHandHoldsNothing) {
     HeldSheet setup;
-    draw_hand_marker(setup.framebuffer, setup.camera, DragHandle{}, setup.cloth);
+    draw_hand_marker(setup.framebuffer, setup.camera, Grab{}, setup.cloth);
     EXPECT_EQ(setup.total(), 0);
 }
 
 TEST(HandMarker, AMarkerAtTheHandAndNoLineWhileItIsWhereTheHeldPointIs) {
     HeldSheet setup;
-    draw_hand_marker(setup.framebuffer, setup.camera, setup.drag, setup.cloth);
-    const auto at = raster::project_to_window(setup.camera, 320, 240, glm::vec3(setup.drag.target));
+    draw_hand_marker(setup.framebuffer, setup.camera, setup.grab, setup.cloth);
+    const auto at = raster::project_to_window(setup.camera, 320, 240, glm::vec3(setup.grab.target));
     ASSERT_TRUE(at.has_value());
     const int near_hand = marker_pixels_near(setup.framebuffer, *at, 5);
     EXPECT_GE(near_hand, 50);             // a 9-pixel square, about
@@ -65,12 +65,12 @@ TEST(HandMarker, AMarkerAtTheHandAndNoLineWhileItIsWhereTheHeldPointIs) {
 
 TEST(HandMarker, ALineJoinsTheHandToTheHeldPointWhileTheyDiffer) {
     HeldSheet setup;
-    setup.drag.target += Vec3(0.3, 0.2, 0.0);  // the hand has moved on; the cloth not yet
-    draw_hand_marker(setup.framebuffer, setup.camera, setup.drag, setup.cloth);
+    setup.grab.target += Vec3(0.3, 0.2, 0.0);  // the hand has moved on; the cloth not yet
+    draw_hand_marker(setup.framebuffer, setup.camera, setup.grab, setup.cloth);
     const auto hand =
-        raster::project_to_window(setup.camera, 320, 240, glm::vec3(setup.drag.target));
+        raster::project_to_window(setup.camera, 320, 240, glm::vec3(setup.grab.target));
     const auto held = raster::project_to_window(
-        setup.camera, 320, 240, glm::vec3(setup.cloth.positions[setup.drag.particles[0]]));
+        setup.camera, 320, 240, glm::vec3(setup.cloth.positions[setup.grab.particles[0]]));
     ASSERT_TRUE(hand && held);
     EXPECT_GE(marker_pixels_near(setup.framebuffer, *hand, 5), 50);
     // The line's midpoint is drawn, and the line reaches the held point.

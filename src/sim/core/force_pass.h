@@ -16,7 +16,7 @@ struct ForceField {
     Vec3 gravity{0.0, -9.81, 0.0};  // m/s²
     double air_drag = 0.0;          // N·s/m per particle: f = -air_drag (v - wind)
     Vec3 wind{0.0};                 // m/s
-    // The particles the hand holds this step (drag.h), ascending: their velocities are
+    // The particles the hand holds this step (grab.h), ascending: their velocities are
     // prescribed. Only the implicit solves read it; other steps are corrected after.
     std::span<const std::uint32_t> held;
     std::span<const Collider> colliders;  // those with repulsion contacts, if any

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "sim/interaction/drag.h"
+#include "sim/interaction/grab.h"
 
 namespace weft {
 
@@ -20,7 +20,7 @@ bool Recovery::step(Simulation& simulation, double chosen_dt, std::string& messa
         char text[96];
         std::snprintf(text, sizeof text,
                       "the cloth slipped from the hand: a spring at it passed %gx its rest length",
-                      DragHandle::default_grip_stretch);
+                      Grab::default_grip_stretch);
         message = text;
     }
     if (!report.diverged()) {
@@ -86,7 +86,7 @@ bool Recovery::step(Simulation& simulation, double chosen_dt, std::string& messa
                       "diverged at t=%.3f s: %s; rolled back to t=%.3f s, dt halved to %.3g ms",
                       diverged_at, report.divergence->c_str(), simulation.time(), halved_dt * 1e3);
     }
-    simulation.end_drag();
+    simulation.let_go();
     ++recoveries;
     message = text;
     return false;

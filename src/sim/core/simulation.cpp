@@ -82,7 +82,7 @@ void Simulation::reset() {
     set_force_field(scene_.forces.gravity, scene_.forces.air_drag, scene_.forces.wind);
     workspace_.resize(cloth_.particle_count(), integrator_);
     workspace_.settings.pool = pool_.get();
-    drag_ = DragHandle{};
+    grab_ = Grab{};
     // The floor goes under the cloth as it starts, and stays there through every edit.
     floor_height_ = floor_height(cloth_, make_colliders(scene_.colliders));
     build_colliders();
@@ -96,16 +96,16 @@ void Simulation::reset() {
 }
 
 StepReport Simulation::step() {
-    // The grip (drag.h). An explicit step cannot answer the hand within itself: its grip is
+    // The grip (grab.h). An explicit step cannot answer the hand within itself: its grip is
     // judged before the step, where the hand's move would leave the springs at the hand.
     // Implicit Euler's solve answers the hand, so its grip is judged after the solve: where
     // it slipped, the step is taken again from the same state without the hand.
-    if (!drag_.active()) return take_step(false);
-    find_grip_springs(drag_, cloth_);
-    prescribe_hand_motion(drag_, cloth_, dt_);
+    if (!grab_.active()) return take_step(false);
+    find_grip_springs(grab_, cloth_);
+    prescribe_hand_motion(grab_, cloth_, dt_);
     if (integrator_ != Integrator::implicit_euler) {
-        if (coming_grip_stretch(drag_, cloth_, dt_) <= drag_.grip_stretch) return take_step(false);
-        end_drag();
+        if (coming_grip_stretch(grab_, cloth_, dt_) <= grab_.grip_stretch) return take_step(false);
+        let_go();
         StepReport report = take_step(false);
         report.hand_slipped = true;
         return report;
@@ -117,7 +117,7 @@ StepReport Simulation::step() {
     const StepTimes first_try = report.times;
     cloth_.positions = grip_start_positions_;
     cloth_.velocities = grip_start_velocities_;
-    end_drag();
+    let_go();
     report = take_step(false);
     report.hand_slipped = true;
     report.times.add(first_try);
@@ -177,12 +177,12 @@ StepReport Simulation::take_step(bool judge_grip) {
 void Simulation::begin_step(StepInProgress& step, StepReport& report) {
     workspace_.settings.profiling = profiling_;
     workspace_.statistics.implicit_times = {};
-    // The hand's particles get the velocity that takes them where the hand goes (drag.h).
+    // The hand's particles get the velocity that takes them where the hand goes (grab.h).
     // The field points at them only for the step, so a copied Simulation never holds a
     // pointer into another one.
-    step.held = report.held = drag_.active();
-    if (step.held) start_hand_motion(drag_, cloth_, dt_);
-    field_.held = drag_.particles;
+    step.held = report.held = grab_.active();
+    if (step.held) start_hand_motion(grab_, cloth_, dt_);
+    field_.held = grab_.particles;
     // Gusts: the wind of this step's start (gusts.h), held through the step.
     if (scene_.forces.gust > 0.0)
         field_.wind = to_vec3(gusty_wind(scene_.forces.wind, scene_.forces.gust, time_));
@@ -254,10 +254,10 @@ bool Simulation::hold_in_hand_after_step(StepInProgress& step, bool judge_grip) 
     // Whatever the step and the corrections did to the held particles, they end it where the
     // hand put them. Not a correction for the Verlets' history: their previous positions are
     // where the hand had them, which is how the hand moved them.
-    hold_in_hand(drag_, cloth_);
-    if (judge_grip && largest_grip_stretch(drag_, cloth_) > drag_.grip_stretch) return false;
+    hold_in_hand(grab_, cloth_);
+    if (judge_grip && largest_grip_stretch(grab_, cloth_) > grab_.grip_stretch) return false;
     if (step.watching)
-        for (const std::uint32_t p : drag_.particles)
+        for (const std::uint32_t p : grab_.particles)
             step.watching->check(p, cloth_.positions[p], cloth_.velocities[p]);
     return true;
 }
@@ -284,9 +284,9 @@ std::optional<std::string> Simulation::check_guards(const StepInProgress& step,
         divergence_guard_.check(cloth_, step.check_runaway_stretch, pool_.get(), swept);
     // With tearing on, an unstable step shreds the cloth rather than diverge (runaway_tearing.h).
     if (!divergence && scene_.tear_max_stretch)
-        divergence = tearing_guard_.check(cloth_, torn_, time_, drag_);
+        divergence = tearing_guard_.check(cloth_, torn_, time_, grab_);
     if (!divergence)
-        divergence = energy_guard_.check(cloth_, field_, time_, drag_.active(), pool_.get());
+        divergence = energy_guard_.check(cloth_, field_, time_, grab_.active(), pool_.get());
     return divergence;
 }
 
@@ -445,19 +445,19 @@ void Simulation::set_parameters(const Scene& wanted) {
     scene_.name = wanted.name;
 }
 
-void Simulation::start_drag(DragHandle drag) {
-    drag_ = std::move(drag);
-    drag_.last_pull_time = time_;
+void Simulation::start_grab(Grab grab) {
+    grab_ = std::move(grab);
+    grab_.last_pull_time = time_;
     // The held particles' velocities change at once: carried history no longer fits them.
     workspace_.history.valid = false;
 }
 
-void Simulation::move_drag_target(const Vec3& target) {
-    if (drag_.active()) move_hand(drag_, target, time_, dt_);
+void Simulation::pull_to(const Vec3& target) {
+    if (grab_.active()) move_hand(grab_, target, time_, dt_);
 }
 
-void Simulation::end_drag() {
-    drag_ = DragHandle{};
+void Simulation::let_go() {
+    grab_ = Grab{};
     workspace_.history.valid = false;
     // The energy guard measures from where the hand lets go: what the hand put in since its
     // last check is the cloth's now (energy_guard.h).

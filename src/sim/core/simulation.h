@@ -18,7 +18,7 @@
 #include "sim/guards/energy_guard.h"
 #include "sim/guards/runaway_tearing.h"
 #include "sim/integrators/integrator.h"
-#include "sim/interaction/drag.h"
+#include "sim/interaction/grab.h"
 #include "sim/scene/scene.h"
 
 namespace weft {
@@ -27,7 +27,7 @@ struct StepReport {
     std::size_t springs_torn = 0;           // springs that broke in this step
     std::size_t contacts = 0;               // impulse contacts and self-collision pairs resolved
     std::optional<std::string> divergence;  // why the state is no longer sound, if it is not
-    bool hand_slipped = false;              // the cloth pulled out of the hand (drag.h)
+    bool hand_slipped = false;              // the cloth pulled out of the hand (grab.h)
     bool held = false;                      // the hand held the cloth through the step
     StepTimes times;                        // where the step went, when profiling (s)
     bool diverged() const { return divergence.has_value(); }
@@ -125,12 +125,12 @@ class Simulation {
     // Back to the scene's initial state (with the parameters as they are now).
     void reset();
 
-    // The user's hand: grab the cloth where a ray hits it, pull, let go (drag.h). The hand
+    // The user's hand: grab the cloth where a ray hits it, pull, let go (grab.h). The hand
     // lets go by itself when the cloth slips from it (StepReport::hand_slipped).
-    void start_drag(DragHandle drag);
-    void move_drag_target(const Vec3& target);
-    void end_drag();
-    const DragHandle& drag() const { return drag_; }
+    void start_grab(Grab grab);
+    void pull_to(const Vec3& target);
+    void let_go();
+    const Grab& grab() const { return grab_; }
 
     // Pins and the cut tool.
     void set_pinned(std::size_t particle, bool pinned);
@@ -169,7 +169,7 @@ class Simulation {
     double dt_;
     IntegratorWorkspace workspace_;
     std::shared_ptr<WorkerPool> pool_;  // shared by copies, which are never stepped at once
-    DragHandle drag_;
+    Grab grab_;
     std::vector<Collider> colliders_;        // the scene's, then the floor if it has one
     double floor_height_ = 0.0;              // m, set by reset()
     std::vector<SpringGroup> switched_off_;  // families switched off, kept with their tears

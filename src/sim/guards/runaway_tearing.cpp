@@ -23,7 +23,7 @@ double springs_per_line(const Cloth& cloth, std::size_t springs) {
 
 std::optional<std::string> RunawayTearingGuard::check(const Cloth& cloth,
                                                       std::span<const Spring> torn, double time,
-                                                      const DragHandle& hand) {
+                                                      const Grab& hand) {
     if (!valid_) {
         valid_ = true;
         recent_.clear();

@@ -46,7 +46,7 @@
 #include <string>
 
 #include "sim/core/cloth.h"
-#include "sim/interaction/drag.h"
+#include "sim/interaction/grab.h"
 
 namespace weft {
 
@@ -59,7 +59,7 @@ class RunawayTearingGuard {
     // After a step that ended at `time` and tore `torn` (tearing's, before the cloth lost
     // them); `hand`: the user's, active or not.
     std::optional<std::string> check(const Cloth& cloth, std::span<const Spring> torn, double time,
-                                     const DragHandle& hand);
+                                     const Grab& hand);
     // The sheet was rebuilt or its springs changed other than by tearing and cutting (reset,
     // families switched): the window starts empty and the allowance is measured again.
     void forget() { valid_ = false; }

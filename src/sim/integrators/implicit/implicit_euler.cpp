@@ -11,7 +11,7 @@
 // transverse term (1 - L/l) is clamped at 0 for compressed springs: negative, it makes the
 // system indefinite and conjugate gradient unreliable (Choi & Ko 2002 discuss the buckling
 // behind it). Repulsion contacts are taken explicitly, in f0. The hand's particles
-// (drag.h) are constrained: their velocities are prescribed, filtered like pins.
+// (grab.h) are constrained: their velocities are prescribed, filtered like pins.
 //
 // The system matrix A = M + h C + h² K is symmetric positive definite; it is never
 // assembled. Conjugate gradient multiplies by it spring by spring, with pinned particles

@@ -166,7 +166,7 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
         kernel_of(level, implicit_kernel::setup_rows_baseline, implicit_kernel::setup_rows_avx2,
                   implicit_kernel::setup_rows_avx512);
     over_rows(solver, pool, [&](int begin, int end) { setup(job, begin, end, warm_start); });
-    // Particles in the hand (drag.h): constrained, with their velocities prescribed (Baraff &
+    // Particles in the hand (grab.h): constrained, with their velocities prescribed (Baraff &
     // Witkin's z). Filtered out like pins, but their velocity stays in the vector the solve
     // multiplies, so every free neighbour's row sees where the hand takes them.
     for (const std::uint32_t p : field.held) {

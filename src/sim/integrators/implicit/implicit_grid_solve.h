@@ -7,7 +7,7 @@
 // double for any topology, and a test shows the two agree to the solve's tolerance.
 //
 // The particles in the user's hand enter the system as constraints with prescribed
-// velocities (drag.h), so the rest of the sheet answers the hand within the step at any dt.
+// velocities (grab.h), so the rest of the sheet answers the hand within the step at any dt.
 // Results are the same bit for bit for any number of threads and every kernel build.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The hand (drag.h): held particles go where the hand takes them in every integrator, the
+// The hand (grab.h): held particles go where the hand takes them in every integrator, the
 // rest of the cloth answers, a release hands back the hand's velocity, and a hand beyond the
 // cloth's reach loses its grip instead of stretching the cloth without bound.
 #include <gtest/gtest.h>
@@ -12,7 +12,7 @@
 #include "sim/build/cloth_builder.h"
 #include "sim/core/simulation.h"
 #include "sim/guards/divergence.h"
-#include "sim/interaction/drag.h"
+#include "sim/interaction/grab.h"
 #include "sim/scene_io/scene_loader.h"
 
 namespace weft {
@@ -38,39 +38,39 @@ const std::pair<Integrator, double> methods[] = {{Integrator::explicit_euler, 0.
                                                  {Integrator::rk4, 0.001},
                                                  {Integrator::implicit_euler, 1.0 / 60.0}};
 
-TEST(Drag, GrabsOnlyFreeParticlesWithinTheRadiusWithFallingWeights) {
+TEST(Grab, GrabsOnlyFreeParticlesWithinTheRadiusWithFallingWeights) {
     const Cloth cloth = build_grid_cloth(sheet());
     const RayHit hit{0, 3 * 8 + 3, 1.0, cloth.positions[3 * 8 + 3]};
-    const DragHandle drag = grab_cloth(cloth, hit, 0.12);
-    ASSERT_TRUE(drag.active());
-    ASSERT_FALSE(drag.followers.empty());
+    const Grab grab = grab_cloth(cloth, hit, 0.12);
+    ASSERT_TRUE(grab.active());
+    ASSERT_FALSE(grab.followers.empty());
     auto weight_at = [&](std::uint32_t p) {
         const double distance = glm::length(cloth.positions[p] - hit.point);
         EXPECT_LT(distance, 0.12);
         EXPECT_FALSE(cloth.is_pinned(p));
         return std::pow(1.0 - distance * distance / (0.12 * 0.12), 2);
     };
-    for (std::size_t k = 0; k < drag.particles.size(); ++k) {
-        EXPECT_NEAR(drag.weights[k], weight_at(drag.particles[k]), 1e-12);
-        EXPECT_GE(drag.weights[k], 0.5);
+    for (std::size_t k = 0; k < grab.particles.size(); ++k) {
+        EXPECT_NEAR(grab.weights[k], weight_at(grab.particles[k]), 1e-12);
+        EXPECT_GE(grab.weights[k], 0.5);
     }
-    for (std::size_t k = 0; k < drag.followers.size(); ++k) {
-        EXPECT_NEAR(drag.follower_weights[k], weight_at(drag.followers[k]), 1e-12);
-        EXPECT_LT(drag.follower_weights[k], 0.5);
+    for (std::size_t k = 0; k < grab.followers.size(); ++k) {
+        EXPECT_NEAR(grab.follower_weights[k], weight_at(grab.followers[k]), 1e-12);
+        EXPECT_LT(grab.follower_weights[k], 0.5);
     }
     // Every free particle within the radius is in one list or the other.
     std::size_t within = 0;
     for (std::size_t p = 0; p < cloth.particle_count(); ++p)
         within += glm::length(cloth.positions[p] - hit.point) < 0.12 && !cloth.is_pinned(p);
-    EXPECT_EQ(drag.particles.size() + drag.followers.size(), within);
+    EXPECT_EQ(grab.particles.size() + grab.followers.size(), within);
     // A tiny radius still grabs the particle that was hit.
-    const DragHandle small = grab_cloth(cloth, hit, 1e-6);
+    const Grab small = grab_cloth(cloth, hit, 1e-6);
     ASSERT_EQ(small.particles.size(), 1u);
     EXPECT_EQ(small.particles[0], hit.particle);
     // Its grip springs are exactly the springs with one end at it: 2 structural, 2 shear
     // inside an 8 x 8 sheet, none to itself.
     EXPECT_EQ(small.grip_springs.size(), 8u);
-    for (const DragHandle::GripSpring& spring : small.grip_springs) {
+    for (const Grab::GripSpring& spring : small.grip_springs) {
         EXPECT_EQ(spring.held, hit.particle);
         EXPECT_NE(spring.other, hit.particle);
     }
@@ -79,18 +79,18 @@ TEST(Drag, GrabsOnlyFreeParticlesWithinTheRadiusWithFallingWeights) {
 // A lift of the bottom edge's middle, one target a 60 Hz frame, with as many steps a frame
 // as the method's dt asks: at every frame's end the grabbed particle is where the hand is,
 // whatever the method, and the rest of the sheet came along (its centre rose).
-TEST(Drag, TheGrabbedPointIsWhereTheHandIsInEveryMethod) {
+TEST(Grab, TheGrabbedPointIsWhereTheHandIsInEveryMethod) {
     for (const auto& [integrator, dt] : methods) {
         Simulation simulation(sheet(integrator, dt));
         const std::uint32_t grabbed = 7 * 8 + 4;
         const Vec3 start = simulation.cloth().positions[grabbed];
         const double centre_before = simulation.cloth().positions[4 * 8 + 4].y;
-        simulation.start_drag(grab_cloth(simulation.cloth(), {0, grabbed, 1.0, start}, 0.06));
+        simulation.start_grab(grab_cloth(simulation.cloth(), {0, grabbed, 1.0, start}, 0.06));
         const int steps_a_frame = std::max(1, static_cast<int>(std::lround(1.0 / 60.0 / dt)));
         const int frames = integrator == Integrator::explicit_euler ? 6 : 18;
         for (int frame = 1; frame <= frames; ++frame) {
             const Vec3 hand = start + (0.4 * frame / frames) * Vec3(0.0, 1.0, 0.0);  // 1.3 m/s
-            simulation.move_drag_target(hand);
+            simulation.pull_to(hand);
             for (int s = 0; s < steps_a_frame; ++s)
                 ASSERT_FALSE(simulation.step().diverged()) << integrator_name(integrator);
             EXPECT_LT(glm::length(simulation.cloth().positions[grabbed] - hand), 1e-12)
@@ -105,15 +105,15 @@ TEST(Drag, TheGrabbedPointIsWhereTheHandIsInEveryMethod) {
 
 // Within a frame of several steps the hand moves evenly, not in one jump: the grabbed
 // particle's velocity is the hand's (distance over the frame's time) at every step.
-TEST(Drag, TheHandMovesEvenlyThroughTheStepsOfAFrame) {
+TEST(Grab, TheHandMovesEvenlyThroughTheStepsOfAFrame) {
     Simulation simulation(sheet());
     const std::uint32_t grabbed = 7 * 8 + 4;
     const Vec3 start = simulation.cloth().positions[grabbed];
-    simulation.start_drag(grab_cloth(simulation.cloth(), {0, grabbed, 1.0, start}, 0.06));
+    simulation.start_grab(grab_cloth(simulation.cloth(), {0, grabbed, 1.0, start}, 0.06));
     for (int s = 0; s < 20; ++s) ASSERT_FALSE(simulation.step().diverged());  // 20 ms held still
     const Vec3 velocity(0.0, 0.9, 0.3);                                       // m/s
     for (int frame = 1; frame <= 5; ++frame) {
-        simulation.move_drag_target(start + (frame * 0.02) * velocity);  // one frame, 20 steps
+        simulation.pull_to(start + (frame * 0.02) * velocity);  // one frame, 20 steps
         for (int s = 0; s < 20; ++s) {
             ASSERT_FALSE(simulation.step().diverged());
             if (frame > 1) {  // the first frame's interval is the pause before it
@@ -125,20 +125,20 @@ TEST(Drag, TheHandMovesEvenlyThroughTheStepsOfAFrame) {
 }
 
 // A fling flies: let go mid-sweep, the grabbed particle leaves with the hand's velocity.
-TEST(Drag, ReleaseHandsBackTheHandsVelocity) {
+TEST(Grab, ReleaseHandsBackTheHandsVelocity) {
     for (const auto& [integrator, dt] : methods) {
         if (integrator == Integrator::explicit_euler) continue;
         Simulation simulation(sheet(integrator, dt));
         const std::uint32_t grabbed = 7 * 8 + 4;
         const Vec3 start = simulation.cloth().positions[grabbed];
-        simulation.start_drag(grab_cloth(simulation.cloth(), {0, grabbed, 1.0, start}, 0.06));
+        simulation.start_grab(grab_cloth(simulation.cloth(), {0, grabbed, 1.0, start}, 0.06));
         const int steps_a_frame = std::max(1, static_cast<int>(std::lround(1.0 / 60.0 / dt)));
         const Vec3 hand_velocity(0.0, 1.8, -0.6);  // m/s
         for (int frame = 1; frame <= 8; ++frame) {
-            simulation.move_drag_target(start + (frame * steps_a_frame * dt) * hand_velocity);
+            simulation.pull_to(start + (frame * steps_a_frame * dt) * hand_velocity);
             for (int s = 0; s < steps_a_frame; ++s) ASSERT_FALSE(simulation.step().diverged());
         }
-        simulation.end_drag();
+        simulation.let_go();
         EXPECT_LT(glm::length(simulation.cloth().velocities[grabbed] - hand_velocity),
                   1e-6 * glm::length(hand_velocity))
             << integrator_name(integrator);
@@ -154,49 +154,49 @@ TEST(Drag, ReleaseHandsBackTheHandsVelocity) {
 
 // A follower of weight w closes the fraction w of the gap between its velocity and the
 // hand's in each 1/60 s, whatever the step: checked over one frame of 1, 4 and 16 steps.
-TEST(Drag, FollowersCloseTheirWeightOfTheGapToTheHandsVelocityEachFrame) {
+TEST(Grab, FollowersCloseTheirWeightOfTheGapToTheHandsVelocityEachFrame) {
     for (const int steps : {1, 4, 16}) {
         Cloth cloth = build_grid_cloth(sheet());
         const std::uint32_t grabbed = 4 * 8 + 4;
-        DragHandle drag = grab_cloth(cloth, {0, grabbed, 1.0, cloth.positions[grabbed]}, 0.12);
-        ASSERT_FALSE(drag.followers.empty());
+        Grab grab = grab_cloth(cloth, {0, grabbed, 1.0, cloth.positions[grabbed]}, 0.12);
+        ASSERT_FALSE(grab.followers.empty());
         const double dt = 1.0 / 60.0 / steps;
         const Vec3 hand_velocity(0.5, 1.0, 0.0);
-        move_hand(drag, drag.hand + (1.0 / 60.0) * hand_velocity, 0.0, 1.0 / 60.0);
-        for (const std::uint32_t p : drag.followers) cloth.velocities[p] = Vec3(0.0, 0.0, -2.0);
+        move_hand(grab, grab.hand + (1.0 / 60.0) * hand_velocity, 0.0, 1.0 / 60.0);
+        for (const std::uint32_t p : grab.followers) cloth.velocities[p] = Vec3(0.0, 0.0, -2.0);
         for (int s = 0; s < steps; ++s) {
-            prescribe_hand_motion(drag, cloth, dt);
-            EXPECT_LT(glm::length(drag.hand_velocity - hand_velocity), 1e-9);
-            start_hand_motion(drag, cloth, dt);
+            prescribe_hand_motion(grab, cloth, dt);
+            EXPECT_LT(glm::length(grab.hand_velocity - hand_velocity), 1e-9);
+            start_hand_motion(grab, cloth, dt);
         }
-        for (std::size_t k = 0; k < drag.followers.size(); ++k) {
-            const double w = drag.follower_weights[k];
+        for (std::size_t k = 0; k < grab.followers.size(); ++k) {
+            const double w = grab.follower_weights[k];
             const Vec3 expected =
                 hand_velocity + (1.0 - w) * (Vec3(0.0, 0.0, -2.0) - hand_velocity);
-            EXPECT_LT(glm::length(cloth.velocities[drag.followers[k]] - expected), 1e-9)
+            EXPECT_LT(glm::length(cloth.velocities[grab.followers[k]] - expected), 1e-9)
                 << steps << " steps, weight " << w;
         }
-        for (std::size_t k = 0; k < drag.particles.size(); ++k)
-            EXPECT_EQ(cloth.velocities[drag.particles[k]], drag.velocities[k]);
+        for (std::size_t k = 0; k < grab.particles.size(); ++k)
+            EXPECT_EQ(cloth.velocities[grab.particles[k]], grab.velocities[k]);
     }
 }
 
 // The hand thrown far beyond the cloth's reach, back and forth: the cloth goes taut, the
 // grip slips before any spring at the hand passes grip_stretch rest lengths by much, and
 // nothing diverges, in every method.
-TEST(Drag, AHandBeyondReachSlipsInsteadOfStretchingTheCloth) {
+TEST(Grab, AHandBeyondReachSlipsInsteadOfStretchingTheCloth) {
     for (const auto& [integrator, dt] : methods) {
         if (integrator == Integrator::explicit_euler) continue;
         Simulation simulation(sheet(integrator, dt));
         const std::uint32_t grabbed = 7 * 8 + 4;
         const Vec3 start = simulation.cloth().positions[grabbed];
-        simulation.start_drag(grab_cloth(simulation.cloth(), {0, grabbed, 1.0, start}, 0.1));
+        simulation.start_grab(grab_cloth(simulation.cloth(), {0, grabbed, 1.0, start}, 0.1));
         const int steps_a_frame = std::max(1, static_cast<int>(std::lround(1.0 / 60.0 / dt)));
         bool slipped = false;
         double largest_stretch = 0.0;
         for (int frame = 1; frame <= 120; ++frame) {
             // 5 m either side every 1/60 s.
-            simulation.move_drag_target(start + Vec3(frame % 2 ? 5.0 : -5.0, 0.0, 0.0));
+            simulation.pull_to(start + Vec3(frame % 2 ? 5.0 : -5.0, 0.0, 0.0));
             for (int s = 0; s < steps_a_frame; ++s) {
                 const StepReport report = simulation.step();
                 ASSERT_FALSE(report.diverged())
@@ -207,26 +207,26 @@ TEST(Drag, AHandBeyondReachSlipsInsteadOfStretchingTheCloth) {
             }
         }
         EXPECT_TRUE(slipped) << integrator_name(integrator);
-        EXPECT_FALSE(simulation.drag().active()) << integrator_name(integrator);
+        EXPECT_FALSE(simulation.grab().active()) << integrator_name(integrator);
         EXPECT_LT(largest_stretch, runaway_stretch_ratio) << integrator_name(integrator);
     }
 }
 
 // Within reach the grip holds: a slow lift of a corner never slips.
-TEST(Drag, TheGripHoldsWithinReach) {
+TEST(Grab, TheGripHoldsWithinReach) {
     Simulation simulation(sheet());
     const std::uint32_t grabbed = 7 * 8 + 0;
     const Vec3 start = simulation.cloth().positions[grabbed];
-    simulation.start_drag(grab_cloth(simulation.cloth(), {0, grabbed, 1.0, start}, 0.06));
+    simulation.start_grab(grab_cloth(simulation.cloth(), {0, grabbed, 1.0, start}, 0.06));
     for (int frame = 1; frame <= 60; ++frame) {
-        simulation.move_drag_target(start + (0.3 * frame / 60.0) * Vec3(0.0, 1.0, 1.0));
+        simulation.pull_to(start + (0.3 * frame / 60.0) * Vec3(0.0, 1.0, 1.0));
         for (int s = 0; s < 17; ++s) {
             const StepReport report = simulation.step();
             ASSERT_FALSE(report.diverged());
             ASSERT_FALSE(report.hand_slipped) << "frame " << frame;
         }
     }
-    EXPECT_TRUE(simulation.drag().active());
+    EXPECT_TRUE(simulation.grab().active());
 }
 
 }  // namespace
@@ -260,13 +260,13 @@ SweepResult sweep(const Scene& scene, double settle, double duration, Path path)
     const Cloth& cloth = simulation.cloth();
     const auto grabbed = static_cast<std::uint32_t>((cloth.rows - 1) * cloth.cols + cloth.cols / 2);
     const Vec3 start = cloth.positions[grabbed];
-    simulation.start_drag(grab_cloth(cloth, {0, grabbed, 1.0, start}, 0.08));
-    EXPECT_TRUE(simulation.drag().active());
+    simulation.start_grab(grab_cloth(cloth, {0, grabbed, 1.0, start}, 0.08));
+    EXPECT_TRUE(simulation.grab().active());
     const int frames = static_cast<int>(std::lround(duration * 60.0));
     Vec3 hand = start;
     for (int frame = 1; frame <= frames; ++frame) {
         hand = start + path(frame / 60.0);
-        simulation.move_drag_target(hand);
+        simulation.pull_to(hand);
         const double frame_end = settle + frame / 60.0 - 1e-9;
         while (simulation.time() < frame_end) {
             const StepReport report = simulation.step();
@@ -312,7 +312,7 @@ Vec3 fling(double t) {
 
 // The default scene (explicit) and the cotton-like 128² sheet (implicit Euler at one step a
 // frame), hung for 1.5 s first: when the hand stops, the grabbed point is with it.
-TEST(Drag, TheGrabbedPointKeepsUpWithALiftAndAFlickOnTheShippedCloths) {
+TEST(Grab, TheGrabbedPointKeepsUpWithALiftAndAFlickOnTheShippedCloths) {
     for (const char* file : {"hanging_sheet.toml", "cloth_128.toml"}) {
         const Scene scene = shipped(file);
         const SweepResult lifted = sweep(scene, 1.5, 0.3, lift);
@@ -328,7 +328,7 @@ TEST(Drag, TheGrabbedPointKeepsUpWithALiftAndAFlickOnTheShippedCloths) {
 
 // The same on cloths of these materials that are not the shipped files: other sizes and
 // another grab radius' worth of sheet.
-TEST(Drag, TheGrabbedPointKeepsUpOnOtherSheetsOfTheSameMaterials) {
+TEST(Grab, TheGrabbedPointKeepsUpOnOtherSheetsOfTheSameMaterials) {
     Scene cotton = shipped("cloth_128.toml");  // 0.2 kg/m², implicit Euler at 1/60 s
     cotton.cloth.rows = cotton.cloth.cols = 48;
     cotton.cloth.spacing = 1.15 / 47.0;

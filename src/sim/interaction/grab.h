@@ -32,7 +32,7 @@
 
 namespace weft {
 
-struct DragHandle {
+struct Grab {
     std::vector<std::uint32_t> particles;  // held particles, ascending (pinned ones excluded)
     std::vector<double> weights;           // in [1/2, 1]: 1 at the grab point
     std::vector<Vec3> offsets;             // m, particle minus grab point when grabbed
@@ -69,34 +69,34 @@ struct DragHandle {
 // A handle grabbing the cloth where `hit` is: every free particle within `radius` (m) of
 // the hit point gets a weight (1 - (d/r)²)², held from 1/2 up, following below; the hit
 // triangle's nearest corner is always held, so a small radius still grabs one particle.
-DragHandle grab_cloth(const Cloth& cloth, const RayHit& hit, double radius);
+Grab grab_cloth(const Cloth& cloth, const RayHit& hit, double radius);
 
 // A new target for the hand at simulated time `time` (s): the hand's point goes there in the
 // time the last target took to come (at least one step of dt, at most 1/30 s, a slow frame).
-void move_hand(DragHandle& drag, const Vec3& target, double time, double dt);
+void move_hand(Grab& grab, const Vec3& target, double time, double dt);
 
 // Before a step of dt: moves the hand's point on and sets each held particle's goal (the
 // hand's point plus its offset) and prescribed velocity.
-void prescribe_hand_motion(DragHandle& drag, const Cloth& cloth, double dt);
+void prescribe_hand_motion(Grab& grab, const Cloth& cloth, double dt);
 
 // Gives each held particle its prescribed velocity, for the step to take it to its goal, and
 // brings each follower's velocity towards the hand's by its weight.
-void start_hand_motion(const DragHandle& drag, Cloth& cloth, double dt);
+void start_hand_motion(const Grab& grab, Cloth& cloth, double dt);
 
 // The springs from the hand to the free cloth, found again if the cloth's topology changed
 // since (a tear, a cut).
-void find_grip_springs(DragHandle& drag, const Cloth& cloth);
+void find_grip_springs(Grab& grab, const Cloth& cloth);
 
 // After the step: each held particle where its goal is, at its prescribed velocity.
-void hold_in_hand(const DragHandle& drag, Cloth& cloth);
+void hold_in_hand(const Grab& grab, Cloth& cloth);
 
 // The largest length, in rest lengths, of the springs from the hand to the free cloth (1 if
-// there are none): the grip slips past drag.grip_stretch.
-double largest_grip_stretch(const DragHandle& drag, const Cloth& cloth);
+// there are none): the grip slips past grab.grip_stretch.
+double largest_grip_stretch(const Grab& grab, const Cloth& cloth);
 
 // The same for the step about to be taken, before it: each held particle at its goal, each
 // other end where its velocity takes it in dt. What an explicit step will find, since the
 // cloth cannot answer the hand within it.
-double coming_grip_stretch(const DragHandle& drag, const Cloth& cloth, double dt);
+double coming_grip_stretch(const Grab& grab, const Cloth& cloth, double dt);
 
 }  // namespace weft

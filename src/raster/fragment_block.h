@@ -73,7 +73,8 @@ inline bool fits_fragment_block(const TriangleSetup& setup) {
 
 // Rows [y, min(y + 4, y_end)) of the triangle: the fragments that pass the depth test, in
 // order, into `sink` at `offset` (their depths written if depth_write). Returns how many.
-// Only while avx512_in_use() (vector_isa.h), for a triangle that fits_fragment_block().
+// Only into a framebuffer that uses AVX-512 (Framebuffer::avx512_in_use), for a triangle that
+// fits_fragment_block().
 int traverse_fragment_block(const BlockTriangle& triangle, int y, const FragmentSink& sink,
                             int offset);
 // The same for rows [y, min(y + 2, y_end)), in half-width vectors: for a triangle at most

@@ -16,6 +16,7 @@
 
 #include "raster/colour.h"
 #include "raster/pixel_rect.h"
+#include "raster/vector_isa.h"
 
 namespace weft::raster {
 
@@ -29,6 +30,11 @@ class Framebuffer {
 
     // Same rule as the constructor; the contents are undefined until the next clear().
     void resize(int width, int height);
+
+    // Whether drawing into it uses the AVX-512 builds of the block traversal and the lighting
+    // (vector_isa.h): by default where the CPU runs them; the frame is the same to the byte.
+    bool avx512_in_use() const { return avx512_; }
+    void use_avx512(bool enabled) { avx512_ = enabled && avx512_supported(); }
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -58,6 +64,7 @@ class Framebuffer {
     int height_ = 0;
     std::vector<Rgba8> colours_;
     std::vector<float> depths_;
+    bool avx512_ = avx512_supported();
 };
 
 }  // namespace weft::raster

@@ -183,8 +183,9 @@ void draw_prepared_with(Framebuffer& framebuffer, const PreparedMesh& prepared,
 
     // Cull, clip, rasterize, shade: triangle_rasterizer.h.
     typename Shader::Queue queue;
-    const Shader shader{prepare_surface(style, lighting, prepared.eye),
-                        framebuffer.colours().data(), &queue};
+    PreparedSurface surface = prepare_surface(style, lighting, prepared.eye);
+    surface.avx512 = framebuffer.avx512_in_use();
+    const Shader shader{surface, framebuffer.colours().data(), &queue};
     RasterState state;
     state.scissor = bounds;
     for_each_triangle([&](std::size_t index) {

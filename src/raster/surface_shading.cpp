@@ -63,7 +63,7 @@ PreparedSurface prepare_surface(const SurfaceStyle& style, const Lighting& light
 
 void shade_batch(const PreparedSurface& surface, const SurfaceBatch& batch, ShadingLanes& lanes,
                  Rgba8* colours) {
-    if (avx512_in_use())
+    if (surface.avx512)
         shade_batch_avx512(surface, batch, lanes, colours);
     else
         shade_batch_body(surface, batch, lanes, colours);

@@ -62,6 +62,7 @@ struct PreparedSurface {
     glm::vec3 front_colour{0.0f}, back_colour{0.0f};
     SurfacePattern pattern = SurfacePattern::none;
     float pattern_frequency = 0.0f, pattern_contrast = 0.0f;
+    bool avx512 = false;  // shade_batch lights with the AVX-512 build (vector_isa.h)
 };
 
 PreparedSurface prepare_surface(const SurfaceStyle& style, const Lighting& lighting,

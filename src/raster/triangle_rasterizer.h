@@ -246,7 +246,7 @@ void traverse_and_shade(Framebuffer& framebuffer, const RasterState& state,
                         const TriangleSetup& setup, const float* const (&given_over_w)[3],
                         Shader& shader) {
     if constexpr (takes_fragment_blocks<Shader>()) {
-        if (avx512_in_use() && fits_fragment_block(setup)) {
+        if (framebuffer.avx512_in_use() && fits_fragment_block(setup)) {
             traverse_blocks(framebuffer, state, setup, given_over_w,
                             varying_count_of<Shader>(state), shader);
             return;

@@ -1,7 +1,5 @@
 #include "raster/vector_isa.h"
 
-#include <atomic>
-
 namespace weft::raster {
 namespace {
 
@@ -18,14 +16,8 @@ const bool supported = detect_avx512();
 
 }  // namespace
 
-std::atomic<bool> detail::avx512_active{supported};
-
 bool avx512_supported() {
     return supported;
-}
-
-void use_avx512(bool enabled) {
-    detail::avx512_active.store(enabled && supported, std::memory_order_relaxed);
 }
 
 }  // namespace weft::raster

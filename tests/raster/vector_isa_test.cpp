@@ -19,11 +19,6 @@
 namespace weft::raster {
 namespace {
 
-// Puts AVX-512 back in use (where supported) when a test ends.
-struct Avx512Switch {
-    ~Avx512Switch() { use_avx512(true); }
-};
-
 // A crumpled sheet of `cells`² quads with jittered corners: triangles of a fraction of a
 // pixel to several pixels across, slivers among them, folds that hide parts of the sheet
 // behind others (so depth tests fail inside one draw) and both sides in view.
@@ -63,13 +58,11 @@ struct Frames {
 template <class Draw>
 Frames draw_both_ways(int width, int height, Draw&& draw) {
     Frames frames{Framebuffer(width, height), Framebuffer(width, height)};
-    use_avx512(true);
+    frames.baseline.use_avx512(false);
     frames.avx512.clear(Rgba8{10, 20, 30, 255});
     draw(frames.avx512);
-    use_avx512(false);
     frames.baseline.clear(Rgba8{10, 20, 30, 255});
     draw(frames.baseline);
-    use_avx512(true);
     return frames;
 }
 
@@ -87,7 +80,6 @@ void expect_same(const Frames& frames, const char* what) {
 
 TEST(Avx512, DrawsTheFrameTheBaselineBuildDraws) {
     if (!avx512_supported()) GTEST_SKIP() << "no AVX-512 on this CPU";
-    Avx512Switch restore;
     // Odd sizes so that blocks hang over the right and bottom edges of the frame, and a
     // sheet larger than the view so that it is cut there.
     const int width = 203, height = 157;
@@ -156,12 +148,14 @@ TEST(Avx512, DrawsTheFrameTheBaselineBuildDraws) {
                 "bands of 7 rows");
 }
 
-TEST(Avx512, SwitchFollowsTheCpu) {
-    Avx512Switch restore;
-    use_avx512(true);
-    EXPECT_EQ(avx512_in_use(), avx512_supported());
-    use_avx512(false);
-    EXPECT_FALSE(avx512_in_use());
+TEST(Avx512, EachFramebufferChoosesWithinWhatTheCpuRuns) {
+    Framebuffer first(8, 8), second(8, 8);
+    EXPECT_EQ(first.avx512_in_use(), avx512_supported());  // by default where it runs
+    first.use_avx512(false);
+    EXPECT_FALSE(first.avx512_in_use());
+    EXPECT_EQ(second.avx512_in_use(), avx512_supported());  // the other keeps its own
+    first.use_avx512(true);
+    EXPECT_EQ(first.avx512_in_use(), avx512_supported());  // never past the CPU
 }
 
 }  // namespace

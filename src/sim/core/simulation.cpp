@@ -149,7 +149,7 @@ struct Simulation::StepInProgress {
 
 StepReport Simulation::take_step(bool judge_grip) {
     StepReport report;
-    PhaseClock clock(profiling_);
+    PhaseClock clock(profiling());
     StepInProgress step(*this);
     begin_step(step, report);
     integrate(integrator_, cloth_, field_, dt_, workspace_);
@@ -175,7 +175,6 @@ StepReport Simulation::take_step(bool judge_grip) {
 }
 
 void Simulation::begin_step(StepInProgress& step, StepReport& report) {
-    workspace_.settings.profiling = profiling_;
     workspace_.statistics.implicit_times = {};
     // The hand's particles get the velocity that takes them where the hand goes (grab.h).
     // The field points at them only for the step, so a copied Simulation never holds a

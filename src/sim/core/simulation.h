@@ -88,8 +88,8 @@ class Simulation {
     // same bit for bit whatever the count.
     void set_thread_count(int threads);
     // Whether each step measures its phases into StepReport::times (off: no clock is read).
-    void set_profiling(bool on) { profiling_ = on; }
-    bool profiling() const { return profiling_; }
+    void set_profiling(bool on) { workspace_.settings.profiling = on; }
+    bool profiling() const { return workspace_.settings.profiling; }
     int thread_count() const { return pool_->thread_count(); }
     // The threads it steps with, for measures taken between steps (energy, stretch).
     WorkerPool* pool() const { return pool_.get(); }
@@ -183,7 +183,6 @@ class Simulation {
     std::vector<Spring> torn_;  // the springs the last step tore (kept: no allocation a step)
     double time_ = 0.0;
     std::uint64_t steps_taken_ = 0;
-    bool profiling_ = false;
 };
 
 }  // namespace weft

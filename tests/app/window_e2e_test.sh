@@ -51,30 +51,36 @@ check() { if "$@"; then passes=$((passes + 1)); else echo "FAIL: $*"; failures=$
 # The test waits on the window's state, not on the clock: weft rewrites WEFT_WINDOW_STATE
 # after every frame it draws (src/app/window_state_file.h), and these poll it.
 window_value() { awk -v key="$1" '$1 == key { print $2 }' "$work/$weft_name/window_state" 2>/dev/null; }
+# wait_until WHAT TEST...: polls until TEST holds. The window exiting first is a failure; a
+# window that never gets there is a hang, which ctest's timeout ends.
+wait_until() {
+  local what=$1
+  shift
+  until "$@"; do
+    if ! kill -0 "$weft_pid" 2>/dev/null; then
+      echo "FAIL: the window exited before $what"; failures=$((failures + 1)); return 1
+    fi
+    sleep 0.05
+  done
+}
+frames_at_least() { [ "$(window_value frames)" -ge "$1" ] 2>/dev/null; }
+time_at_least() { awk -v t="$(window_value time)" -v s="$1" 'BEGIN { exit !(t != "" && t >= s) }'; }
+settled() {  # 2.5 s of simulated time, or paused (parameters no step can hold pause the run)
+  awk -v t="$(window_value time)" -v p="$(window_value paused)" 'BEGIN { exit !(t >= 2.5 || p == 1) }'
+}
 # wait_frames N: until the window has drawn N more frames. A frame handles every event sent
 # before it began, so two frames after an input the window has answered it and drawn the
 # answer.
 wait_frames() {
-  local now target
+  local now
   now=$(window_value frames)
-  target=$((${now:-0} + $1))
-  for _ in $(seq 1200); do
-    now=$(window_value frames)
-    [ "${now:-0}" -ge "$target" ] && return 0
-    sleep 0.05
-  done
-  echo "FAIL: the window drew no $1 frames in 60 s"; failures=$((failures + 1)); return 1
+  wait_until "drawing $1 more frames" frames_at_least $((${now:-0} + $1))
 }
 # wait_sim_seconds S: until the main run's simulated time has gone on S seconds.
 wait_sim_seconds() {
-  local start now
+  local start
   start=$(window_value time)
-  for _ in $(seq 1200); do
-    now=$(window_value time)
-    awk -v a="${start:-0}" -v b="${now:-0}" -v s="$1" 'BEGIN { exit !(b - a >= s) }' && return 0
-    sleep 0.05
-  done
-  echo "FAIL: the window's run did not go on $1 s in 60 s"; failures=$((failures + 1)); return 1
+  wait_until "$1 s more of simulated time" time_at_least "$(awk -v a="${start:-0}" -v s="$1" 'BEGIN { printf "%.17g", a + s }')"
 }
 
 # Starts weft in $work/$1 (further arguments go to weft), its captures folder (screenshots,
@@ -89,12 +95,7 @@ start_weft() {
   weft_pid=$!
   window=$(timeout 20 xdotool search --sync --name "weft - e2e sheet" | head -1)
   [ -n "$window" ] || { echo "FAIL: no weft window appeared"; cat "$work/$name/out.log"; exit 1; }
-  # The sheet settles: 2.5 s of simulated time, or the run has paused (parameters no step can
-  # hold pause it, saying why).
-  for _ in $(seq 1200); do
-    awk -v t="$(window_value time)" -v p="$(window_value paused)" 'BEGIN { exit !(t >= 2.5 || p == 1) }' && break
-    sleep 0.05
-  done
+  wait_until "the sheet settled" settled
 }
 # Quits with Escape; weft must exit with status 0 (under ASan: no leak, no error at exit).
 quit_weft() {

@@ -27,7 +27,8 @@ void IntegratorWorkspace::resize(std::size_t particle_count, Integrator integrat
         for (std::vector<Vec3>* array :
              {&scratch.implicit_delta_v, &scratch.implicit_rhs, &scratch.implicit_residual,
               &scratch.implicit_direction, &scratch.implicit_product,
-              &scratch.implicit_step_start_positions, &scratch.implicit_step_start_velocities})
+              &scratch.implicit_step_start_positions, &scratch.implicit_step_start_velocities,
+              &scratch.implicit_linearised_positions, &scratch.implicit_linearised_velocities})
             std::vector<Vec3>().swap(*array);
         std::vector<ImplicitSpringTerms>().swap(scratch.implicit_springs);
         scratch.implicit_grid = ImplicitGridSolver{};

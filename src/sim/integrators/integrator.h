@@ -64,22 +64,25 @@ struct IntegratorScratch {
     // Implicit Euler (allocated on its first step): the solution Δv (kept: the warm start),
     // right-hand side, CG vectors and per-spring terms of the general path; the structured
     // solve (implicit_grid_solve.h), used where the cloth is a grid, with its own warm start;
-    // and the start of the step being taken, for a split to go back to.
+    // the start of the step being taken, for a split or a Newton iteration to go back to; the
+    // state a linearised step is taken at (implicit_grid_solve.h: ImplicitLinearisation).
     std::vector<Vec3> implicit_delta_v, implicit_rhs, implicit_residual, implicit_direction,
         implicit_product;
     std::vector<ImplicitSpringTerms> implicit_springs;
     ImplicitGridSolver implicit_grid;
     std::vector<Vec3> implicit_step_start_positions, implicit_step_start_velocities;
+    std::vector<Vec3> implicit_linearised_positions, implicit_linearised_velocities;
 };
 
 // What the steps did, for the caller to report.
 struct IntegratorStatistics {
     std::uint64_t force_evaluations = 0;  // total calls of the force pass, for cost studies
     // Implicit Euler's last step: CG iterations over all its pieces, times it was halved
-    // (implicit_euler.cpp), the relative residual of its last solve, and, when profiling,
+    // and linearised again (implicit_euler.cpp), the relative residual of its last solve, and, when profiling,
     // its phases summed over its pieces.
     int implicit_iterations = 0;
     int implicit_splits = 0;
+    int implicit_newton_iterations = 0;  // linearised again where a piece ended
     double implicit_relative_residual = 0.0;
     ImplicitPhaseTimes implicit_times;
 };

@@ -17,7 +17,8 @@ void write(const implicit_kernel::Field3& field, std::size_t i, const Vec3& valu
     field.z[i] = static_cast<float>(value.z);
 }
 
-// The impulse (N·s) the surface gave a held particle, with job.applied = A v1 unfiltered.
+// The impulse (N·s) the surface gave a held particle, A v1 - b = A (v1 - v_k) - g, with
+// job.applied = A (v1 - v_k) unfiltered.
 double impulse_along_normal(const ContactConstraint& contact, const implicit_kernel::Job& job) {
     return glm::dot(contact.normal, read(job.applied, job.pad + contact.particle)) -
            contact.rhs_along_normal;
@@ -67,10 +68,11 @@ void ImplicitContacts::hold(const Cloth& cloth, std::span<const Collider> solids
         const std::size_t i = job.pad + contact.particle;
         const Vec3& n = contact.normal;
         write(job.contact_normal, i, n);
-        // b filtered: S b; its normal part is what the impulse is measured from.
-        const Vec3 b = read(job.rhs, i);
-        contact.rhs_along_normal = glm::dot(n, b);
-        write(job.rhs, i, b - contact.rhs_along_normal * n);
+        // g filtered: S g (the residual pass then forms S b); its normal part is what the
+        // impulse is measured from.
+        const Vec3 g = read(job.rhs_change, i);
+        contact.rhs_along_normal = glm::dot(n, g);
+        write(job.rhs_change, i, g - contact.rhs_along_normal * n);
         // The guess meets the constraint; every later change is filtered, so v1 does too.
         const Vec3 guess = read(job.solution, i);
         write(job.solution, i, guess + (contact.normal_speed - glm::dot(n, guess)) * n);
@@ -83,7 +85,8 @@ std::size_t ImplicitContacts::let_go_of_pulled(implicit_kernel::Job& job) {
         if (contact.distance < 0.0 || impulse_along_normal(contact, job) >= 0.0) return false;
         const std::size_t i = job.pad + contact.particle;
         write(job.contact_normal, i, Vec3(0.0));
-        write(job.rhs, i, read(job.rhs, i) + contact.rhs_along_normal * contact.normal);
+        write(job.rhs_change, i,
+              read(job.rhs_change, i) + contact.rhs_along_normal * contact.normal);
         return true;
     });
     job.has_contacts = !held.empty();

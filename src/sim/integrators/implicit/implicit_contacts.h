@@ -19,7 +19,7 @@
 // particle: the one it would cross deepest.
 //
 // A constraint is an equality, so it could pull. After the solve, A v1 - b at a held
-// particle is the impulse its surface gave it (N·s). Where one points into the solid and the
+// particle is the impulse its surface gave it (N·s; b and g as in implicit_grid_kernel.h). Where one points into the solid and the
 // particle is outside it, the surface would have pulled: those particles are let go and the
 // step is solved again from where it stands (one round of an active-set method; Baraff and
 // Witkin release such constraints a step later instead, which left particles chattering
@@ -45,25 +45,25 @@ struct ContactConstraint {
     double distance = 0.0;          // m: signed, at the step's start
     double normal_speed = 0.0;      // m/s: n · v1, prescribed
     double friction = 0.0;          // Coulomb coefficient of the surface
-    double rhs_along_normal = 0.0;  // N·s: n · b before b was filtered
+    double rhs_along_normal = 0.0;  // N·s: n · g before g was filtered
 };
 
 struct ImplicitContacts {
     std::vector<ContactConstraint> held;  // this step's, ascending by particle
 
     // Chooses the particles held this step (impulse colliders only) from the cloth's state
-    // at its start, and enters them in the job: their normals, b filtered (its normal part
+    // at its start, and enters them in the job: their normals, g filtered (its normal part
     // kept for the impulse), and the guess given its prescribed normal speed. The normals of
     // the previous step's held particles are cleared first. Particles the job fixes (job.free
     // 0: pinned, or in the hand) are left to what fixes them.
     void hold(const Cloth& cloth, std::span<const Collider> solids, const Vec3& gravity, double dt,
               implicit_kernel::Job& job);
 
-    // After a solve, with job.applied = A v1 unfiltered: lets go of the particles outside
-    // their surface that it pulled (their normal and b restored), and returns how many.
+    // After a solve, with job.applied = A (v1 - v_k) unfiltered: lets go of the particles
+    // outside their surface that it pulled (their normal and g restored), and returns how many.
     std::size_t let_go_of_pulled(implicit_kernel::Job& job);
 
-    // After the last solve, with job.applied = A v1 unfiltered: friction from each held
+    // After the last solve, with job.applied = A (v1 - v_k) unfiltered: friction from each held
     // particle's pushing impulse, on job.solution.
     void apply_friction(const Cloth& cloth, implicit_kernel::Job& job) const;
 };

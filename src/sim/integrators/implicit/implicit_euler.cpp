@@ -1,23 +1,30 @@
-// Implicit (backward) Euler, linearised once per step (Baraff & Witkin 1998):
+// Implicit (backward) Euler, M (v1 - v0) = h f(x0 + h v1, v1), by Newton's method on v1
+// (Baraff & Witkin 1998 take one iteration from x0). Each iteration linearises the forces at
+// an iterate v_k, at the positions x_k = x0 + h v_k it reaches:
 //
-//   (M - h ∂f/∂v - h² ∂f/∂x) Δv = h (f0 + h ∂f/∂x v0),   v1 = v0 + Δv,   x1 = x0 + h v1
+//   (M - h ∂f/∂v - h² ∂f/∂x) (v1 - v_k) = h f(x_k, v_k) - M (v_k - v0),   x1 = x0 + h v1
 //
-// First order and unconditionally stable on linear springs, at the price of one sparse
-// linear solve per step; it damps motion (numerical dissipation grows with h ω).
+// The first iterate is v_k = v0: the forces and their stiffness are taken where the cloth
+// would be if nothing acted on it, x0 + h v0, so a sheet moving as a whole, falling or
+// carried by the hand, is linearised close to where it ends (from x0, a spring carried
+// sideways at its rest length shows no stiffness across itself). Exact for linear springs,
+// whatever the iterate, so unconditionally stable on them; first order; it damps motion
+// (numerical dissipation grows with h ω). Further iterations only where the first leaves a
+// large error (step_or_split below).
 //
 // The Jacobians, per spring with d = x_j - x_i, l = |d|, u = d / l:
 //   ∂f_i/∂x_j = k [u uᵀ + (1 - L/l)(I - u uᵀ)],   ∂f_i/∂v_j = c u uᵀ,
 // with ∂f_i/∂x_i, ∂f_i/∂v_i their negatives; air drag adds -air_drag I to ∂f/∂v. The
 // transverse term (1 - L/l) is clamped at 0 for compressed springs: negative, it makes the
 // system indefinite and conjugate gradient unreliable (Choi & Ko 2002 discuss the buckling
-// behind it). Repulsion contacts are taken explicitly, in f0. The hand's particles
+// behind it). Repulsion contacts are taken explicitly, in f(x_k, v_k). The hand's particles
 // (grab.h) are constrained: their velocities are prescribed, filtered like pins.
 //
 // The system matrix A = M + h C + h² K is symmetric positive definite; it is never
 // assembled. Conjugate gradient multiplies by it spring by spring, with pinned particles
 // filtered out of every vector (Baraff & Witkin's constraint filter for fully constrained
-// particles), warm-started from the previous step's Δv, until the residual is below
-// implicit_cg_tolerance × |b| or implicit_cg_max_iterations is reached.
+// particles), warm-started from the previous step's Δv on a first iterate, until the
+// residual is below implicit_cg_tolerance × |b| or implicit_cg_max_iterations is reached.
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -62,10 +69,10 @@ void multiply_implicit_system(const Cloth& cloth, const IntegratorWorkspace& wor
 
 namespace {
 
-// One linearised step of dt, by the structured solve where the cloth is a grid, else by the
-// general one below.
+// One linearised step of dt from the cloth's state, linearised at `at`, by the structured
+// solve where the cloth is a grid, else by the general one below.
 void take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
-                          IntegratorWorkspace& work);
+                          IntegratorWorkspace& work, const ImplicitLinearisation& at);
 
 // Whether some live spring is longer than `ratio` rest lengths: the stencil's vectorised
 // test first, which almost always settles it, then the exact one.
@@ -79,7 +86,7 @@ bool some_spring_longer_than(const Cloth& cloth, double ratio, WorkerPool* pool,
 // than `ratio` rest lengths, in rest lengths: for each, how far its force at the end of the
 // step, k (|d1| - L) d1 / |d1|, is from what the step assumed, f(d0) + K(d0) (d1 - d0) (K as
 // in the header, a compressed spring's negative transverse term left out as in the step),
-// divided by k L. `start`: the positions x0.
+// divided by k L. `start`: the positions x_k the step was linearised at.
 //
 // Shorter springs are left out. A compressed spring's force is at most k L, so its error
 // cannot run away, but it is large by design where a fold turns one over (the step drops its
@@ -113,53 +120,81 @@ double largest_linearisation_error(const Cloth& cloth, std::span<const Vec3> sta
     return largest;
 }
 
-// The step of dt, or, when its linearisation fails it, two of dt / 2 (each of which may
-// split again, down to dt / 2^max_split_depth). The linearised step sees a spring's stiffness
-// only as it is at the start: a spring at its rest length has none across itself, so a
-// flat sheet released at dt = 1/30 s falls 2.4 spacings in its first step everywhere but at
-// the pins, and the springs beside them come out 2.5 rest lengths long (256², cloth_256
-// material) where the step assumed no force at all; the next steps run away. So a step after
-// which some spring is longer than split_stretch_ratio rest lengths (a pass that almost
-// never finds one, vectorised) and some spring's force is further than split_force_error
-// × k L from what the step assumed is taken again in halves: the error of the linearisation
-// falls as the square of the step's motion. A hand pulling a sheet taut stretches its
-// springs along themselves, where the linearisation is close to exact, and is not split.
-// Returns the depth of the finest piece taken.
+// The step of dt, or, when its linearisation fails it, the same step linearised again
+// where it ended, or two of dt / 2 (each of which may split again, down to
+// dt / 2^max_split_depth). The linearised step sees a spring's stiffness only as it is where
+// it is linearised: a spring at its rest length has none across itself, so a flat sheet
+// released at dt = 1/30 s falls 2.4 spacings in its first step everywhere but at the pins,
+// and the springs beside them come out 2.5 rest lengths long (256², cloth_256 material)
+// where the step assumed no force at all; the next steps run away. So a step after which
+// some spring is longer than split_stretch_ratio rest lengths (a pass that almost never
+// finds one, vectorised) and some spring's force is further than split_force_error × k L
+// from what the step assumed is not kept. First it is taken again from the same start,
+// linearised at the state it reached (a Newton iteration: where the hand flicks the sheet
+// back, the springs it whips round are seen stretched), up to newton_iterations times;
+// then in halves: the error of the linearisation falls as the square of the step's motion.
+// A hand pulling a sheet taut stretches its springs along themselves, where the
+// linearisation is close to exact, and is not split. Returns the depth of the finest
+// piece taken.
 int step_or_split(Cloth& cloth, const ForceField& field, double dt, IntegratorWorkspace& work,
                   int depth) {
     const ImplicitSolveSettings& settings = work.settings.implicit;
-    const bool may_split = depth < settings.max_split_depth && settings.split_stretch_ratio > 1.0;
+    const bool checked = settings.split_stretch_ratio > 1.0;
+    const bool may_split = checked && depth < settings.max_split_depth;
+    const std::size_t count = cloth.particle_count();
+    IntegratorScratch& scratch = work.scratch;
+    scratch.implicit_linearised_positions.resize(count);
     PhaseClock clock(work.settings.profiling);
     double timed_inside = 0.0;  // the linearised step times its own phases
-    if (may_split) {
-        work.scratch.implicit_step_start_positions.resize(cloth.particle_count());
-        work.scratch.implicit_step_start_velocities.resize(cloth.particle_count());
-        for_particle_ranges(work, cloth.particle_count(), [&](std::size_t begin, std::size_t end) {
+    if (checked) {
+        scratch.implicit_step_start_positions.resize(count);
+        scratch.implicit_step_start_velocities.resize(count);
+        for_particle_ranges(work, count, [&](std::size_t begin, std::size_t end) {
             std::copy(cloth.positions.begin() + begin, cloth.positions.begin() + end,
-                      work.scratch.implicit_step_start_positions.begin() + begin);
+                      scratch.implicit_step_start_positions.begin() + begin);
             std::copy(cloth.velocities.begin() + begin, cloth.velocities.begin() + end,
-                      work.scratch.implicit_step_start_velocities.begin() + begin);
+                      scratch.implicit_step_start_velocities.begin() + begin);
         });
     }
-    clock.lap(work.statistics.implicit_times.split_checks);
-    const int iterations_before = work.statistics.implicit_iterations;
-    take_linearised_step(cloth, field, dt, work);
-    work.statistics.implicit_iterations += iterations_before;
-    clock.lap(timed_inside);
-    const bool kept =
-        !may_split ||
-        !some_spring_longer_than(cloth, settings.split_stretch_ratio, work.settings.pool,
-                                 work.settings.options.kernel_build) ||
-        !(largest_linearisation_error(cloth, work.scratch.implicit_step_start_positions,
-                                      settings.split_stretch_ratio,
-                                      work.settings.pool) > settings.split_force_error);
-    clock.lap(work.statistics.implicit_times.split_checks);
-    if (kept) return depth;
+    auto go_back_to_start = [&] {
+        for_particle_ranges(work, count, [&](std::size_t begin, std::size_t end) {
+            std::copy(scratch.implicit_step_start_positions.begin() + begin,
+                      scratch.implicit_step_start_positions.begin() + end,
+                      cloth.positions.begin() + begin);
+            std::copy(scratch.implicit_step_start_velocities.begin() + begin,
+                      scratch.implicit_step_start_velocities.begin() + end,
+                      cloth.velocities.begin() + begin);
+        });
+    };
+    auto step_linearised_at = [&](std::span<const Vec3> velocities) {
+        clock.lap(work.statistics.implicit_times.split_checks);
+        const int iterations_before = work.statistics.implicit_iterations;
+        take_linearised_step(cloth, field, dt, work,
+                             {velocities, scratch.implicit_linearised_positions});
+        work.statistics.implicit_iterations += iterations_before;
+        clock.lap(timed_inside);
+        const bool kept =
+            !checked ||
+            !some_spring_longer_than(cloth, settings.split_stretch_ratio, work.settings.pool,
+                                     work.settings.options.kernel_build) ||
+            !(largest_linearisation_error(cloth, scratch.implicit_linearised_positions,
+                                          settings.split_stretch_ratio,
+                                          work.settings.pool) > settings.split_force_error);
+        clock.lap(work.statistics.implicit_times.split_checks);
+        return kept;
+    };
+    bool kept = step_linearised_at({});
+    for (int newton = 0; !kept && newton < settings.newton_iterations; ++newton) {
+        ++work.statistics.implicit_newton_iterations;
+        scratch.implicit_linearised_velocities.resize(count);
+        std::copy(cloth.velocities.begin(), cloth.velocities.end(),
+                  scratch.implicit_linearised_velocities.begin());
+        go_back_to_start();
+        kept = step_linearised_at(scratch.implicit_linearised_velocities);
+    }
+    if (kept || !may_split) return depth;
     ++work.statistics.implicit_splits;
-    std::copy(work.scratch.implicit_step_start_positions.begin(),
-              work.scratch.implicit_step_start_positions.end(), cloth.positions.begin());
-    std::copy(work.scratch.implicit_step_start_velocities.begin(),
-              work.scratch.implicit_step_start_velocities.end(), cloth.velocities.begin());
+    go_back_to_start();
     clock.lap(work.statistics.implicit_times.split_checks);
     const int first = step_or_split(cloth, field, 0.5 * dt, work, depth + 1);
     return std::max(first, step_or_split(cloth, field, 0.5 * dt, work, depth + 1));
@@ -171,6 +206,7 @@ void step_implicit_euler(Cloth& cloth, const ForceField& field, double dt,
                          IntegratorWorkspace& work) {
     work.statistics.implicit_iterations = 0;
     work.statistics.implicit_splits = 0;
+    work.statistics.implicit_newton_iterations = 0;
     // A step-size controller's memory: a step that had to be split is followed by one that
     // starts one level coarser than its finest piece, not by a whole step that would most
     // likely fail again and be thrown away. Each step that needs no split of its own takes
@@ -187,11 +223,11 @@ void step_implicit_euler(Cloth& cloth, const ForceField& field, double dt,
 namespace {
 
 void take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
-                          IntegratorWorkspace& work) {
+                          IntegratorWorkspace& work, const ImplicitLinearisation& at) {
     if (work.settings.options.structured_implicit_solve &&
         step_implicit_euler_grid(
             cloth, field, dt, work.settings.implicit, work.scratch.implicit_grid,
-            work.settings.pool, work.settings.options.kernel_build,
+            work.settings.pool, work.settings.options.kernel_build, at,
             work.settings.profiling ? &work.statistics.implicit_times : nullptr)) {
         ++work.statistics.force_evaluations;
         work.statistics.implicit_iterations = work.scratch.implicit_grid.last_iterations;
@@ -208,13 +244,22 @@ void take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
                             &work.scratch.implicit_product})
             array->assign(count, Vec3(0.0));
     }
-    evaluate_forces(cloth, field, cloth.positions, cloth.velocities, work);
+    // The iterate v_k and the positions it reaches, x_k = x0 + h v_k (pins stay put).
+    const bool first_iterate = at.velocities.empty();
+    const std::span<const Vec3> vk =
+        first_iterate ? std::span<const Vec3>(cloth.velocities) : at.velocities;
+    const std::span<Vec3> xk = at.positions;
+    const std::span<const double> inverse_masses = cloth.topology().inverse_masses;
+    for (std::size_t p = 0; p < count; ++p)
+        xk[p] = inverse_masses[p] != 0.0 ? cloth.positions[p] + dt * vk[p] : cloth.positions[p];
+    for (std::uint32_t p : field.held) xk[p] = cloth.positions[p] + dt * vk[p];
+    evaluate_forces(cloth, field, xk, vk, work);
 
-    // Per-spring terms of h² K + h C, and the right-hand side b = h (f0 - h K v0).
+    // Per-spring terms of h² K + h C at x_k.
     std::size_t s = 0;
     for (const SpringGroup& group : cloth.topology().spring_groups) {
         for (const Spring& spring : group.springs) {
-            const Vec3 d = cloth.positions[spring.j] - cloth.positions[spring.i];
+            const Vec3 d = xk[spring.j] - xk[spring.i];
             const double length = glm::length(d);
             ImplicitSpringTerms& terms = work.scratch.implicit_springs[s++];
             if (length <= 0.0) {
@@ -228,31 +273,21 @@ void take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
             terms.along = dt * dt * (group.stiffness - transverse) + dt * group.damping;
         }
     }
-    // b = h f0 - h² K v0: K v0 is the stiffness part of the same per-spring blocks.
+    // b = h f(x_k, v_k) - M (v_k - v0), for the change v1 - v_k.
     std::span<Vec3> b = work.scratch.implicit_rhs;
-    for (std::size_t p = 0; p < count; ++p) b[p] = dt * work.scratch.forces[p];
-    s = 0;
-    for (const SpringGroup& group : cloth.topology().spring_groups) {
-        for (const Spring& spring : group.springs) {
-            const ImplicitSpringTerms& terms = work.scratch.implicit_springs[s++];
-            const Vec3 relative = cloth.velocities[spring.i] - cloth.velocities[spring.j];
-            const double stiffness_along =
-                terms.along - dt * group.damping;  // h² k·(u uᵀ) part only
-            const Vec3 block =
-                terms.isotropic * relative +
-                (stiffness_along * glm::dot(terms.direction, relative)) * terms.direction;
-            b[spring.i] -= block;
-            b[spring.j] += block;
-        }
-    }
+    const std::span<const double> masses = cloth.topology().masses;
+    for (std::size_t p = 0; p < count; ++p)
+        b[p] = dt * work.scratch.forces[p] - masses[p] * (vk[p] - cloth.velocities[p]);
     for (std::uint32_t p : cloth.topology().pinned) b[p] = Vec3(0.0);
-    // The hand's particles keep the velocity it prescribes (Δv = 0): filtered like pins, while
-    // b above already holds -h² K v0 of their motion for their neighbours.
+    // The hand's particles keep the velocity it prescribes (a change of 0): filtered like pins;
+    // their neighbours' forces above already see where the hand takes them.
     for (std::uint32_t p : field.held) b[p] = Vec3(0.0);
 
-    // Conjugate gradient from the warm start.
+    // Conjugate gradient from the warm start (the previous step's Δv) on a first iterate,
+    // from no change on a later one.
     std::span<Vec3> x = work.scratch.implicit_delta_v, r = work.scratch.implicit_residual,
                     d = work.scratch.implicit_direction, q = work.scratch.implicit_product;
+    if (!first_iterate) std::fill(x.begin(), x.end(), Vec3(0.0));
     for (std::uint32_t p : cloth.topology().pinned) x[p] = Vec3(0.0);
     for (std::uint32_t p : field.held) x[p] = Vec3(0.0);
     multiply_implicit_system(cloth, work, field.air_drag, dt, x, q, field.held);
@@ -277,8 +312,10 @@ void take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
     work.statistics.implicit_relative_residual = b_norm > 0.0 ? std::sqrt(r_squared) / b_norm : 0.0;
 
     for (std::size_t p = 0; p < count; ++p) {
-        cloth.velocities[p] += x[p];
-        cloth.positions[p] += dt * cloth.velocities[p];
+        const Vec3 v1 = vk[p] + x[p];
+        x[p] = v1 - cloth.velocities[p];  // the warm start keeps the step's whole change
+        cloth.velocities[p] = v1;
+        cloth.positions[p] += dt * v1;
     }
 }
 

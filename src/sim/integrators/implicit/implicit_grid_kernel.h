@@ -47,12 +47,15 @@ struct Job {
     int direction_count = 0;
     DirectionTerms directions[max_directions] = {};
 
-    // Inputs of the setup pass (unpadded, interleaved doubles).
-    const double* positions = nullptr;       // m, x0
-    const double* velocities = nullptr;      // m/s, v0
-    const double* static_forces = nullptr;   // N, f(x0, v = 0): everything but the dampers
-    const double* masses = nullptr;          // kg
-    const double* inverse_masses = nullptr;  // 1/kg; 0 marks a pinned particle
+    // Inputs of the setup pass (unpadded, interleaved doubles): the state the step is
+    // linearised at, x_k = x0 + h v_k (a Newton iterate of the backward Euler system; the
+    // first is v_k = v0), and the step's start.
+    const double* positions = nullptr;           // m, x_k
+    const double* velocities = nullptr;          // m/s, v_k
+    const double* initial_velocities = nullptr;  // m/s, v0
+    const double* forces = nullptr;              // N, f(x_k, v_k), the dampers' included
+    const double* masses = nullptr;              // kg
+    const double* inverse_masses = nullptr;      // 1/kg; 0 marks a pinned particle
 
     float* mass_diagonal = nullptr;  // padded: m + h air_drag
     float* free = nullptr;           // padded: 1 for a free particle, 0 for a pinned one
@@ -77,14 +80,15 @@ struct Job {
     bool has_contacts = false;
     Field3 contact_normal;
 
-    Field3 rhs;             // b = M v0 + h f(x0, 0), filtered where a particle is held
-    Field3 start;           // v0
+    Field3 rhs_change;      // g = h f(x_k, v_k) - M (v_k - v0), filtered where a particle is held
+    Field3 rhs;             // b = g + A v_k (the residual pass forms it)
+    Field3 start;           // v_k
     Field3 guess_change;    // the previous step's v1 - v0 (the warm start), kept between steps
     Field3 solution;        // v1, the iterate
     Field3 residual;        // r = b - A v1
     Field3 preconditioned;  // z = P r
     Field3 direction;       // d = z + β d
-    Field3 applied;         // A z
+    Field3 applied;         // A z; after the solve, with contacts, A (v1 - v_k) unfiltered
     Field3 product;         // q = A d = A z + β q
 };
 
@@ -101,7 +105,7 @@ struct RowSums {
 };
 
 // Pass 1, rows [begin, end): the direction terms of the springs that start on these rows,
-// b, v0, the mass diagonal and the free mask, and the guess v0 + warm_start · (previous
+// g, v_k, the mass diagonal and the free mask, and the guess v_k + warm_start · (previous
 // change) into `solution`.
 void setup_rows_baseline(const Job& job, int begin, int end, double warm_start);
 void setup_rows_avx2(const Job& job, int begin, int end, double warm_start);
@@ -110,8 +114,8 @@ void setup_rows_avx512(const Job& job, int begin, int end, double warm_start);
 // The row passes are handed whole pairs of rows (begin even), so that the passes that
 // finish the residual can sum each pair into the first coarse level.
 //
-// Pass 2: the preconditioner; r = b - A v1, z = P r; sums r·z, r·r, and |b - A v0|² (the
-// scale of the residual: the right-hand side of the Δv form, h (f0 + h K v0)).
+// Pass 2: the preconditioner; b = g + A v_k, r = b - A v1, z = P r; sums r·z, r·r, and
+// |g|² = |b - A v_k|² (the scale of the residual: the right-hand side of the Δv form).
 void residual_rows_baseline(const Job& job, int begin, int end, RowSums sums);
 void residual_rows_avx2(const Job& job, int begin, int end, RowSums sums);
 void residual_rows_avx512(const Job& job, int begin, int end, RowSums sums);
@@ -126,8 +130,9 @@ void update_rows_baseline(const Job& job, int begin, int end, float alpha, RowSu
 void update_rows_avx2(const Job& job, int begin, int end, float alpha, RowSums sums);
 void update_rows_avx512(const Job& job, int begin, int end, float alpha, RowSums sums);
 
-// After the solve, with contacts: applied = A v1 without the contact filter, so that
-// A v1 - b at a held particle is the impulse its surface gave it.
+// After the solve, with contacts and `direction` = v1 - v_k: applied = A (v1 - v_k) without
+// the contact filter, so that A (v1 - v_k) - g = A v1 - b at a held particle is the impulse
+// its surface gave it.
 void unfiltered_product_rows_baseline(const Job& job, int begin, int end);
 void unfiltered_product_rows_avx2(const Job& job, int begin, int end);
 void unfiltered_product_rows_avx512(const Job& job, int begin, int end);

@@ -2,11 +2,11 @@
 // implicit_grid_kernel_*.cpp inside an anonymous namespace (internal linkage, see
 // grid_force_kernel.h for why the builds must not share inline functions).
 //
-// The system is A v1 = b with A = M + h C + h² K (Baraff & Witkin 1998), b = M v0 + h f(x0, 0):
-// the Δv form of implicit_euler.cpp rewritten for v1 = v0 + Δv. Subtracting A v0 from both
-// sides gives back A Δv = h (f0 + h K v0), because the dampers are linear in v (C v0 is the
-// damping part of f0), so the two forms are the same system; this one needs no product with
-// K for its right-hand side.
+// The system is A v1 = b with A = M + h C + h² K (Baraff & Witkin 1998), linearised at the
+// state x_k = x0 + h v_k (implicit_euler.cpp): b = g + A v_k with
+// g = h f(x_k, v_k) - M (v_k - v0), the Δv form A (v1 - v_k) = g rewritten for v1. The
+// setup pass forms g and the residual pass adds A v_k, which it multiplies anyway for the
+// residual's scale.
 //
 // Gather formulation, as in the force pass: for every direction k (offset o_k) and particle
 // p, the spring from p to p + o_k contributes B_k[p] (v_p - v_{p+o_k}) to (A v)_p and the
@@ -321,7 +321,7 @@ void setup_rows(const Job& job, int begin, int end, double warm_start) {
                              there + padded, there + 2 * padded, d.stiffness, d.damping, h, iso, ax,
                              ay, az, cols);
         }
-        // b, v0, the guess, the mass diagonal and the free mask.
+        // g, v_k, the guess, the mass diagonal and the free mask.
         for (int c = 0; c < cols; ++c) {
             const std::size_t p = first + static_cast<std::size_t>(c);
             const std::size_t i = base + static_cast<std::size_t>(c);
@@ -330,14 +330,16 @@ void setup_rows(const Job& job, int begin, int end, double warm_start) {
             job.free[i] = is_free ? 1.0f : 0.0f;
             job.mass_diagonal[i] = static_cast<float>(m + h * job.air_drag);
             const double* v = job.velocities + 3 * p;
-            const double* f = job.static_forces + 3 * p;
-            float* b[3] = {job.rhs.x, job.rhs.y, job.rhs.z};
-            float* v0[3] = {job.start.x, job.start.y, job.start.z};
+            const double* v0 = job.initial_velocities + 3 * p;
+            const double* f = job.forces + 3 * p;
+            float* g[3] = {job.rhs_change.x, job.rhs_change.y, job.rhs_change.z};
+            float* vk[3] = {job.start.x, job.start.y, job.start.z};
             float* guess[3] = {job.solution.x, job.solution.y, job.solution.z};
             const float* change[3] = {job.guess_change.x, job.guess_change.y, job.guess_change.z};
             for (int axis = 0; axis < 3; ++axis) {
-                b[axis][i] = is_free ? static_cast<float>(m * v[axis] + h * f[axis]) : 0.0f;
-                v0[axis][i] = is_free ? static_cast<float>(v[axis]) : 0.0f;
+                g[axis][i] =
+                    is_free ? static_cast<float>(h * f[axis] - m * (v[axis] - v0[axis])) : 0.0f;
+                vk[axis][i] = is_free ? static_cast<float>(v[axis]) : 0.0f;
                 guess[axis][i] =
                     is_free ? static_cast<float>(v[axis] + warm_start * change[axis][i]) : 0.0f;
             }
@@ -423,6 +425,17 @@ void diagonal_row(const Job& job, int row, double* __restrict block) {
     }
 }
 
+// b = g + y over a row (y, the filtered A v_k, already in r); r = g, the residual at v_k.
+void form_rhs_row(const Job& job, int row) {
+    const std::size_t base = at(job, row);
+    for (int c = 0; c < job.cols; ++c) {
+        const std::size_t i = base + static_cast<std::size_t>(c);
+        job.rhs.x[i] = job.rhs_change.x[i] + job.residual.x[i];
+        job.rhs.y[i] = job.rhs_change.y[i] + job.residual.y[i];
+        job.rhs.z[i] = job.rhs_change.z[i] + job.residual.z[i];
+    }
+}
+
 // r = b - y over a row (y already in r).
 void subtract_from_rhs_row(const Job& job, int row) {
     const std::size_t base = at(job, row);
@@ -482,10 +495,10 @@ void residual_rows(const Job& job, int begin, int end, RowSums sums) {
     for (int row = begin; row < end; ++row) {
         diagonal_row(job, row, block.data());
         const std::size_t base = at(job, row);
-        // |b - A v0|² first (the residual's scale), then r at the guess, over it.
+        // b from A v_k, and |g|² (the residual's scale); then r at the guess.
         at_start.row(row, job.residual);
-        subtract_from_rhs_row(job, row);
-        sums.third[row] = row_dot(job.residual, job.residual, base, job.cols);
+        form_rhs_row(job, row);
+        sums.third[row] = row_dot(job.rhs_change, job.rhs_change, base, job.cols);
         at_guess.row(row, job.residual);
         subtract_from_rhs_row(job, row);
         precondition_row(job, row);
@@ -526,7 +539,7 @@ void direction_rows(const Job& job, int begin, int end, float beta, RowSums sums
 }
 
 void unfiltered_product_rows(const Job& job, int begin, int end) {
-    BandProduct plain(job, job.solution, begin, band_scratch(job.cols, 1), false);
+    BandProduct plain(job, job.direction, begin, band_scratch(job.cols, 1), false);
     for (int row = begin; row < end; ++row) plain.row(row, job.applied);
 }
 

@@ -53,11 +53,10 @@ void ImplicitGridSolver::prepare(int grid_rows, int grid_cols) {
     // Two rows and two columns either way, rounded to whole vectors of sixteen floats.
     pad = (2 * static_cast<std::size_t>(cols) + 2 + 15) / 16 * 16;
     stride = (count + 2 * pad + 15) / 16 * 16;
-    constexpr int arrays = 4 * implicit_kernel::max_directions + 2 + 6 + 6 + 10 * 3;
+    constexpr int arrays = 4 * implicit_kernel::max_directions + 2 + 6 + 6 + 11 * 3;
     storage.assign(stride * arrays, 0.0f);
     row_sums.assign(4 * static_cast<std::size_t>(rows), 0.0);
-    static_forces.assign(count, Vec3(0.0));
-    zero_velocities.assign(count, Vec3(0.0));
+    forces.assign(count, Vec3(0.0));
     has_previous_change = false;
     contacts.held.clear();  // their particles belonged to the old grid
     job = implicit_kernel::Job{};
@@ -76,8 +75,7 @@ ImplicitGridSolver& ImplicitGridSolver::operator=(const ImplicitGridSolver& othe
     stride = other.stride;
     storage = other.storage;
     row_sums = other.row_sums;
-    static_forces = other.static_forces;
-    zero_velocities = other.zero_velocities;
+    forces = other.forces;
     job = other.job;
     multilevel = other.multilevel;
     contacts = other.contacts;
@@ -109,6 +107,7 @@ void ImplicitGridSolver::bind() {
     job.free = take();
     for (float*& e : job.diagonal) e = take();
     for (float*& e : job.inverse_diagonal) e = take();
+    job.rhs_change = take3();
     job.rhs = take3();
     job.start = take3();
     job.guess_change = take3();
@@ -123,7 +122,9 @@ void ImplicitGridSolver::bind() {
 
 bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
                               const ImplicitSolveSettings& settings, ImplicitGridSolver& solver,
-                              WorkerPool* pool, SimdLevel level, ImplicitPhaseTimes* times) {
+                              WorkerPool* pool, SimdLevel level,
+                              const ImplicitLinearisation& linearisation,
+                              ImplicitPhaseTimes* times) {
     if (!field.colliders.empty() || !grid_stencil_usable(cloth)) return false;
     if (cloth.topology().grid_stencil.directions.size() > implicit_kernel::max_directions)
         return false;
@@ -132,10 +133,21 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     PhaseClock clock(times != nullptr);
     solver.prepare(cloth.rows, cloth.cols);
     implicit_kernel::Job& job = solver.job;
-    // f(x0, v = 0): gravity, the wind's push and the elastic springs; the dampers are
-    // linear in v and live in the matrix (see implicit_grid_kernel.inl).
-    if (!accumulate_grid_forces(cloth, field, cloth.positions, solver.zero_velocities,
-                                solver.static_forces, pool, level))
+    // The state the step is linearised at, x_k = x0 + h v_k (pins stay put), and the forces
+    // there, f(x_k, v_k): gravity, the wind, air drag, the springs and their dampers.
+    const std::span<const Vec3> at_velocities =
+        linearisation.velocities.empty() ? std::span<const Vec3>(cloth.velocities)
+                                         : linearisation.velocities;
+    const std::span<Vec3> at_positions = linearisation.positions;
+    const std::size_t count = cloth.particle_count();
+    const double* inverse_masses = cloth.topology().inverse_masses.data();
+    for (std::size_t p = 0; p < count; ++p)
+        at_positions[p] =
+            inverse_masses[p] != 0.0 ? cloth.positions[p] + dt * at_velocities[p] : cloth.positions[p];
+    for (const std::uint32_t p : field.held)
+        at_positions[p] = cloth.positions[p] + dt * at_velocities[p];
+    if (!accumulate_grid_forces(cloth, field, at_positions, at_velocities, solver.forces, pool,
+                                level))
         return false;
     job.dt = dt;
     job.air_drag = field.air_drag;
@@ -155,9 +167,10 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
         for (float* array : {d.iso, d.axial_x, d.axial_y, d.axial_z})
             std::fill(array, array + solver.stride, 0.0f);
     }
-    job.positions = &cloth.positions.data()->x;
-    job.velocities = &cloth.velocities.data()->x;
-    job.static_forces = &solver.static_forces.data()->x;
+    job.positions = &at_positions.data()->x;
+    job.velocities = &at_velocities.data()->x;
+    job.initial_velocities = &cloth.velocities.data()->x;
+    job.forces = &solver.forces.data()->x;
     job.masses = cloth.topology().masses.data();
     job.inverse_masses = cloth.topology().inverse_masses.data();
 
@@ -173,7 +186,7 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
         const std::size_t i = solver.pad + p;
         const Vec3& v = cloth.velocities[p];
         job.free[i] = 0.0f;
-        job.rhs.x[i] = job.rhs.y[i] = job.rhs.z[i] = 0.0f;
+        job.rhs_change.x[i] = job.rhs_change.y[i] = job.rhs_change.z[i] = 0.0f;
         job.start.x[i] = job.solution.x[i] = static_cast<float>(v.x);
         job.start.y[i] = job.solution.y[i] = static_cast<float>(v.y);
         job.start.z[i] = job.solution.z[i] = static_cast<float>(v.z);
@@ -263,11 +276,21 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
         const auto unfiltered = kernel_of(level, implicit_kernel::unfiltered_product_rows_baseline,
                                           implicit_kernel::unfiltered_product_rows_avx2,
                                           implicit_kernel::unfiltered_product_rows_avx512);
-        over_rows(solver, pool, [&](int begin, int end) { unfiltered(job, begin, end); });
+        // applied = A (v1 - v_k), unfiltered; the search direction is free after a solve.
+        auto impulses = [&] {
+            const implicit_kernel::Field3 &change = job.direction, &v1 = job.solution,
+                                          &vk = job.start;
+            for (std::size_t i = 0; i < solver.stride; ++i) {
+                change.x[i] = v1.x[i] - vk.x[i];
+                change.y[i] = v1.y[i] - vk.y[i];
+                change.z[i] = v1.z[i] - vk.z[i];
+            }
+            over_rows(solver, pool, [&](int begin, int end) { unfiltered(job, begin, end); });
+        };
+        impulses();
         if (solver.contacts.let_go_of_pulled(job) > 0) {
             solve(false);
-            if (job.has_contacts)
-                over_rows(solver, pool, [&](int begin, int end) { unfiltered(job, begin, end); });
+            if (job.has_contacts) impulses();
         }
         solver.contacts.apply_friction(cloth, job);
     }
@@ -276,7 +299,7 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     clock.lap(phases.setup);  // the contacts' impulses and friction, when there are any
 
     // v1 = the solution, x1 = x0 + h v1; pinned particles stay where they are, held ones go
-    // where the hand takes them.
+    // where the hand takes them. The warm start keeps the whole step's change, v1 - v0.
     over_rows(solver, pool, [&](int begin, int end) {
         for (int row = begin; row < end; ++row) {
             for (int c = 0; c < solver.cols; ++c) {
@@ -286,11 +309,13 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
                 const Vec3 v1 = is_free
                                     ? Vec3(job.solution.x[i], job.solution.y[i], job.solution.z[i])
                                     : Vec3(job.start.x[i], job.start.y[i], job.start.z[i]);
+                const Vec3 v0 = cloth.velocities[p];
+                const float keep = is_free ? 1.0f : 0.0f;
+                job.guess_change.x[i] = keep * (job.solution.x[i] - static_cast<float>(v0.x));
+                job.guess_change.y[i] = keep * (job.solution.y[i] - static_cast<float>(v0.y));
+                job.guess_change.z[i] = keep * (job.solution.z[i] - static_cast<float>(v0.z));
                 cloth.velocities[p] = v1;
                 cloth.positions[p] += dt * v1;
-                job.guess_change.x[i] = job.solution.x[i] - job.start.x[i];
-                job.guess_change.y[i] = job.solution.y[i] - job.start.y[i];
-                job.guess_change.z[i] = job.solution.z[i] - job.start.z[i];
             }
         }
     });

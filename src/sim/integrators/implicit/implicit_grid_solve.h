@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "parallel/worker_pool.h"
@@ -27,8 +28,8 @@ namespace weft {
 struct ForceField;
 
 // When the conjugate-gradient loop stops. The residual is measured against the right-hand
-// side of the Δv form, |h (f0 + h K v0)| (the residual at v1 = v0): the part of the step the
-// solve is there to find.
+// side of the Δv form, |g| (implicit_grid_kernel.h: the residual at v1 = v_k): the part of the
+// step the solve is there to find.
 //
 // The error a stopped solve leaves in v1 is about the relative residual times the step's
 // own change, every step, so over a fixed time it does not shrink with h, while implicit
@@ -56,10 +57,12 @@ struct ImplicitSolveSettings {
     double coarse_smoothing = 0.8;  // ω of the first coarse level's V-cycle (0: additive)
     // A step that leaves some spring beyond split_stretch_ratio rest lengths and some
     // spring's force further than split_force_error × k L from what the linearised step
-    // assumed is taken again as two halves, at most max_split_depth times over
-    // (implicit_euler.cpp; a ratio of 0: never).
+    // assumed is linearised again where it ended (a Newton iteration), up to
+    // newton_iterations times, and then taken again as two halves, at most max_split_depth
+    // times over (implicit_euler.cpp; a ratio of 0: never).
     double split_stretch_ratio = 1.3;
     double split_force_error = 0.1;
+    int newton_iterations = 3;
     int max_split_depth = 3;
 
     double tolerance(double dt) const {
@@ -76,7 +79,7 @@ struct ImplicitGridSolver {
     std::size_t stride = 0;  // floats per array
     std::vector<float> storage;
     std::vector<double> row_sums;     // 3 per row
-    std::vector<Vec3> static_forces;  // N, f(x0, v = 0)
+    std::vector<Vec3> forces;  // N, f(x_k, v_k)
     std::vector<Vec3> zero_velocities;
     implicit_kernel::Job job;
     ImplicitMultilevel multilevel;
@@ -98,6 +101,14 @@ struct ImplicitGridSolver {
     void bind();  // points the job's arrays into storage
 };
 
+// Where a linearised step takes the forces and their Jacobians: the velocities v_k of a
+// Newton iterate of the backward Euler system and the positions x_k = x0 + h v_k they reach
+// (pinned particles stay at x0). The first iterate is v_k = v0, the inertial prediction.
+struct ImplicitLinearisation {
+    std::span<const Vec3> velocities;  // m/s, v_k; empty: the cloth's own (v0)
+    std::span<Vec3> positions;         // m, out: x_k, one per particle
+};
+
 // One implicit Euler step of the structured solve, or false, touching nothing, when it
 // cannot take it: no usable grid stencil, or repulsion contacts (forces the general path
 // takes explicitly). Particles about to meet the field's impulse solids are held on their
@@ -107,6 +118,7 @@ struct ImplicitGridSolver {
 bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
                               const ImplicitSolveSettings& settings, ImplicitGridSolver& solver,
                               WorkerPool* pool, SimdLevel level,
+                              const ImplicitLinearisation& linearisation,
                               ImplicitPhaseTimes* times = nullptr);
 
 }  // namespace weft

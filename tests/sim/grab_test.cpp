@@ -183,7 +183,9 @@ TEST(Grab, FollowersCloseTheirWeightOfTheGapToTheHandsVelocityEachFrame) {
 
 // The hand thrown far beyond the cloth's reach, back and forth: the cloth goes taut, the
 // grip slips before any spring at the hand passes grip_stretch rest lengths by much, and
-// nothing diverges, in every method.
+// nothing diverges, in every method. Implicit Euler's frame-sized steps may carry the sheet
+// after the hand with no spring at it past grip_stretch; then the grip holds, and what is
+// asked is that no spring anywhere passed grip_stretch.
 TEST(Grab, AHandBeyondReachSlipsInsteadOfStretchingTheCloth) {
     for (const auto& [integrator, dt] : methods) {
         if (integrator == Integrator::explicit_euler) continue;
@@ -205,6 +207,11 @@ TEST(Grab, AHandBeyondReachSlipsInsteadOfStretchingTheCloth) {
                 largest_stretch =
                     std::max(largest_stretch, largest_stretch_ratio(simulation.cloth()));
             }
+        }
+        if (integrator == Integrator::implicit_euler && !slipped) {
+            EXPECT_TRUE(simulation.grab().active());
+            EXPECT_LT(largest_stretch, Grab::default_grip_stretch);
+            continue;
         }
         EXPECT_TRUE(slipped) << integrator_name(integrator);
         EXPECT_FALSE(simulation.grab().active()) << integrator_name(integrator);

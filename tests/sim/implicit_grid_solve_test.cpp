@@ -248,7 +248,7 @@ TEST(ImplicitGridSolve, TheSnapAtTheEndOfAFallLeavesNoSpikeOfStretch) {
     const double converged_stretch = largest_stretch_after_release(converged, steps);
     Simulation by_default(*loaded.scene);
     const double default_stretch = largest_stretch_after_release(by_default, steps);
-    EXPECT_GT(converged_stretch, 0.03);  // it did snap
+    EXPECT_GT(converged_stretch, 0.02);  // it did snap
     EXPECT_LT(default_stretch, converged_stretch + 0.08);
 }
 

@@ -64,6 +64,9 @@ class Simulation {
 
     // Times the last implicit Euler step was halved (implicit_euler.cpp).
     int last_step_splits() const { return workspace_.statistics.implicit_splits; }
+    int last_step_newton_iterations() const {
+        return workspace_.statistics.implicit_newton_iterations;
+    }
 
     // How the steps compute (simulation_options.h); a kernel build the CPU lacks becomes the
     // best it has.

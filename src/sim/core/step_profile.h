@@ -73,14 +73,16 @@ struct StepProfile {
     std::uint64_t slips = 0;       // steps in which the cloth slipped from the hand
     StepTimes seconds;             // summed over the steps
     std::uint64_t force_evaluations = 0;
-    // Implicit Euler: conjugate-gradient iterations and halvings, over all a step's pieces.
+    // Implicit Euler: conjugate-gradient iterations, halvings and Newton iterations (a piece
+    // linearised again where it ended), over all a step's pieces.
     std::uint64_t solver_iterations = 0;
     int most_iterations = 0;  // in one step
     std::uint64_t splits = 0;
     int most_splits = 0;
+    std::uint64_t newton_iterations = 0;
 
     void add(const StepTimes& times, bool held, bool slipped, std::uint64_t force_evaluations_added,
-             int iterations, int step_splits) {
+             int iterations, int step_splits, int step_newton_iterations) {
         ++steps;
         held_steps += held ? 1 : 0;
         slips += slipped ? 1 : 0;
@@ -90,6 +92,7 @@ struct StepProfile {
         most_iterations = iterations > most_iterations ? iterations : most_iterations;
         splits += static_cast<std::uint64_t>(step_splits);
         most_splits = step_splits > most_splits ? step_splits : most_splits;
+        newton_iterations += static_cast<std::uint64_t>(step_newton_iterations);
     }
     // What was added since `earlier`, a copy of this profile taken before (the largest
     // counts in one step stay this profile's: since the run began).
@@ -102,6 +105,7 @@ struct StepProfile {
         part.force_evaluations -= earlier.force_evaluations;
         part.solver_iterations -= earlier.solver_iterations;
         part.splits -= earlier.splits;
+        part.newton_iterations -= earlier.newton_iterations;
         return part;
     }
 };

@@ -26,17 +26,18 @@ double impulse_along_normal(const ContactConstraint& contact, const implicit_ker
 
 }  // namespace
 
-void ImplicitContacts::hold(const Cloth& cloth, std::span<const Collider> solids,
-                            const Vec3& gravity, double dt, implicit_kernel::Job& job) {
+void ImplicitContacts::choose(const Cloth& cloth, std::span<const Collider> solids,
+                              const Vec3& gravity, double dt, std::span<const std::uint8_t> fixed,
+                              implicit_kernel::Job& job) {
     for (const ContactConstraint& contact : held)
         write(job.contact_normal, job.pad + contact.particle, Vec3(0.0));
     held.clear();
     const std::size_t count = cloth.particle_count();
     for (std::size_t p = 0; p < count; ++p) {
-        // A pin or the hand fixes the particle's velocity (job.free 0): that outranks a
-        // surface, and both at once give its row no consistent solution (a hand pulling the
-        // cloth into the floor gave non-finite positions).
-        if (job.free[job.pad + p] == 0.0f) continue;
+        // A pin or the hand fixes the particle's velocity: that outranks a surface, and both
+        // at once give its row no consistent solution (a hand pulling the cloth into the
+        // floor gave non-finite positions).
+        if (fixed[p] != 0) continue;
         const Vec3& x = cloth.positions[p];
         const Vec3& v = cloth.velocities[p];
         ContactConstraint best;
@@ -63,6 +64,16 @@ void ImplicitContacts::hold(const Cloth& cloth, std::span<const Collider> solids
         }
         if (found) held.push_back(best);
     }
+}
+
+void ImplicitContacts::constrain(std::span<Vec3> velocities) const {
+    for (const ContactConstraint& contact : held) {
+        Vec3& v = velocities[contact.particle];
+        v += (contact.normal_speed - glm::dot(contact.normal, v)) * contact.normal;
+    }
+}
+
+void ImplicitContacts::hold(implicit_kernel::Job& job) {
     job.has_contacts = !held.empty();
     for (ContactConstraint& contact : held) {
         const std::size_t i = job.pad + contact.particle;

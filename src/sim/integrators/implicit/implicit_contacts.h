@@ -52,12 +52,17 @@ struct ImplicitContacts {
     std::vector<ContactConstraint> held;  // this step's, ascending by particle
 
     // Chooses the particles held this step (impulse colliders only) from the cloth's state
-    // at its start, and enters them in the job: their normals, g filtered (its normal part
-    // kept for the impulse), and the guess given its prescribed normal speed. The normals of
-    // the previous step's held particles are cleared first. Particles the job fixes (job.free
-    // 0: pinned, or in the hand) are left to what fixes them.
-    void hold(const Cloth& cloth, std::span<const Collider> solids, const Vec3& gravity, double dt,
-              implicit_kernel::Job& job);
+    // at its start, after clearing the previous step's normals from the job. Particles
+    // something else fixes (`fixed` nonzero: pinned, or in the hand) are left to it.
+    void choose(const Cloth& cloth, std::span<const Collider> solids, const Vec3& gravity,
+                double dt, std::span<const std::uint8_t> fixed, implicit_kernel::Job& job);
+
+    // `velocities` meeting the constraints: each held particle's normal speed prescribed.
+    void constrain(std::span<Vec3> velocities) const;
+
+    // Enters the chosen particles in the job: their normals, g filtered (its normal part
+    // kept for the impulse), and the guess given its prescribed normal speed.
+    void hold(implicit_kernel::Job& job);
 
     // After a solve, with job.applied = A (v1 - v_k) unfiltered: lets go of the particles
     // outside their surface that it pulled (their normal and g restored), and returns how many.

@@ -70,8 +70,9 @@ void multiply_implicit_system(const Cloth& cloth, const IntegratorWorkspace& wor
 namespace {
 
 // One linearised step of dt from the cloth's state, linearised at `at`, by the structured
-// solve where the cloth is a grid, else by the general one below.
-void take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
+// solve where the cloth is a grid, else by the general one below. Returns whether it held
+// particles on solids' surfaces (the structured solve's contacts).
+bool take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
                           IntegratorWorkspace& work, const ImplicitLinearisation& at);
 
 // Whether some live spring is longer than `ratio` rest lengths: the stencil's vectorised
@@ -166,11 +167,12 @@ int step_or_split(Cloth& cloth, const ForceField& field, double dt, IntegratorWo
                       cloth.velocities.begin() + begin);
         });
     };
+    bool held_contacts = false;
     auto step_linearised_at = [&](std::span<const Vec3> velocities) {
         clock.lap(work.statistics.implicit_times.split_checks);
         const int iterations_before = work.statistics.implicit_iterations;
-        take_linearised_step(cloth, field, dt, work,
-                             {velocities, scratch.implicit_linearised_positions});
+        held_contacts = take_linearised_step(cloth, field, dt, work,
+                                             {velocities, scratch.implicit_linearised_positions});
         work.statistics.implicit_iterations += iterations_before;
         clock.lap(timed_inside);
         const bool kept =
@@ -184,7 +186,11 @@ int step_or_split(Cloth& cloth, const ForceField& field, double dt, IntegratorWo
         return kept;
     };
     bool kept = step_linearised_at({});
-    for (int newton = 0; !kept && newton < settings.newton_iterations; ++newton) {
+    // Not where the step held particles on solids: each solve settles which of them the
+    // surface lets go in one round (implicit_contacts.h), so a sheet pulled off the ground
+    // needs the halves' rounds.
+    for (int newton = 0; !kept && !held_contacts && newton < settings.newton_iterations;
+         ++newton) {
         ++work.statistics.implicit_newton_iterations;
         scratch.implicit_linearised_velocities.resize(count);
         std::copy(cloth.velocities.begin(), cloth.velocities.end(),
@@ -222,7 +228,7 @@ void step_implicit_euler(Cloth& cloth, const ForceField& field, double dt,
 
 namespace {
 
-void take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
+bool take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
                           IntegratorWorkspace& work, const ImplicitLinearisation& at) {
     if (work.settings.options.structured_implicit_solve &&
         step_implicit_euler_grid(
@@ -233,7 +239,7 @@ void take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
         work.statistics.implicit_iterations = work.scratch.implicit_grid.last_iterations;
         work.statistics.implicit_relative_residual =
             work.scratch.implicit_grid.last_relative_residual;
-        return;
+        return work.scratch.implicit_grid.last_held_contacts;
     }
     const std::size_t count = cloth.particle_count();
     work.scratch.implicit_springs.resize(
@@ -317,6 +323,7 @@ void take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
         cloth.velocities[p] = v1;
         cloth.positions[p] += dt * v1;
     }
+    return false;
 }
 
 }  // namespace

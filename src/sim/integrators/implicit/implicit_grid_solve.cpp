@@ -57,6 +57,8 @@ void ImplicitGridSolver::prepare(int grid_rows, int grid_cols) {
     storage.assign(stride * arrays, 0.0f);
     row_sums.assign(4 * static_cast<std::size_t>(rows), 0.0);
     forces.assign(count, Vec3(0.0));
+    constrained_velocities.assign(count, Vec3(0.0));
+    fixed.assign(count, 0);
     has_previous_change = false;
     contacts.held.clear();  // their particles belonged to the old grid
     job = implicit_kernel::Job{};
@@ -76,10 +78,13 @@ ImplicitGridSolver& ImplicitGridSolver::operator=(const ImplicitGridSolver& othe
     storage = other.storage;
     row_sums = other.row_sums;
     forces = other.forces;
+    constrained_velocities = other.constrained_velocities;
+    fixed = other.fixed;
     job = other.job;
     multilevel = other.multilevel;
     contacts = other.contacts;
     has_previous_change = other.has_previous_change;
+    last_held_contacts = other.last_held_contacts;
     last_iterations = other.last_iterations;
     last_relative_residual = other.last_relative_residual;
     if (!storage.empty()) bind();
@@ -135,12 +140,27 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     implicit_kernel::Job& job = solver.job;
     // The state the step is linearised at, x_k = x0 + h v_k (pins stay put), and the forces
     // there, f(x_k, v_k): gravity, the wind, air drag, the springs and their dampers.
-    const std::span<const Vec3> at_velocities =
+    std::span<const Vec3> at_velocities =
         linearisation.velocities.empty() ? std::span<const Vec3>(cloth.velocities)
                                          : linearisation.velocities;
     const std::span<Vec3> at_positions = linearisation.positions;
     const std::size_t count = cloth.particle_count();
     const double* inverse_masses = cloth.topology().inverse_masses.data();
+    // Particles about to meet the solids (implicit_contacts.h), of those the pins and the
+    // hand leave free, chosen from the step's start; v_k meets their constraints, so the
+    // step is linearised with them on their surfaces.
+    const bool contacts = !field.solids.empty() || !solver.contacts.held.empty();
+    if (contacts) {
+        for (std::size_t p = 0; p < count; ++p) solver.fixed[p] = inverse_masses[p] == 0.0;
+        for (const std::uint32_t p : field.held) solver.fixed[p] = 1;
+        solver.contacts.choose(cloth, field.solids, field.gravity, dt, solver.fixed, job);
+        if (!solver.contacts.held.empty()) {
+            std::copy(at_velocities.begin(), at_velocities.end(),
+                      solver.constrained_velocities.begin());
+            solver.contacts.constrain(solver.constrained_velocities);
+            at_velocities = solver.constrained_velocities;
+        }
+    }
     for (std::size_t p = 0; p < count; ++p)
         at_positions[p] =
             inverse_masses[p] != 0.0 ? cloth.positions[p] + dt * at_velocities[p] : cloth.positions[p];
@@ -191,10 +211,10 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
         job.start.y[i] = job.solution.y[i] = static_cast<float>(v.y);
         job.start.z[i] = job.solution.z[i] = static_cast<float>(v.z);
     }
-    // Particles held on the solids' surfaces (implicit_contacts.h), of those the pins and the
-    // hand leave free: before the residual pass, whose preconditioner is filtered for them.
-    if (!field.solids.empty() || !solver.contacts.held.empty())
-        solver.contacts.hold(cloth, field.solids, field.gravity, dt, job);
+    // The particles held on the solids' surfaces: before the residual pass, whose
+    // preconditioner is filtered for them.
+    if (contacts) solver.contacts.hold(job);
+    solver.last_held_contacts = job.has_contacts;
 
     const int rows = solver.rows;
     double* sums = solver.row_sums.data();

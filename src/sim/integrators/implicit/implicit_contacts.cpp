@@ -66,13 +66,6 @@ void ImplicitContacts::choose(const Cloth& cloth, std::span<const Collider> soli
     }
 }
 
-void ImplicitContacts::constrain(std::span<Vec3> velocities) const {
-    for (const ContactConstraint& contact : held) {
-        Vec3& v = velocities[contact.particle];
-        v += (contact.normal_speed - glm::dot(contact.normal, v)) * contact.normal;
-    }
-}
-
 void ImplicitContacts::hold(implicit_kernel::Job& job) {
     job.has_contacts = !held.empty();
     for (ContactConstraint& contact : held) {

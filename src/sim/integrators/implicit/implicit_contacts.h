@@ -57,9 +57,6 @@ struct ImplicitContacts {
     void choose(const Cloth& cloth, std::span<const Collider> solids, const Vec3& gravity,
                 double dt, std::span<const std::uint8_t> fixed, implicit_kernel::Job& job);
 
-    // `velocities` meeting the constraints: each held particle's normal speed prescribed.
-    void constrain(std::span<Vec3> velocities) const;
-
     // Enters the chosen particles in the job: their normals, g filtered (its normal part
     // kept for the impulse), and the guess given its prescribed normal speed.
     void hold(implicit_kernel::Job& job);

@@ -53,6 +53,10 @@ struct Job {
     const double* positions = nullptr;           // m, x_k
     const double* velocities = nullptr;          // m/s, v_k
     const double* initial_velocities = nullptr;  // m/s, v0
+    const double* start_velocities = nullptr;    // m/s, v_s: v_k, or v0 where v_k = 0
+    // Whether v_s = v_k (b = g + A v_s), or the step is linearised at x0 with v_k = 0 for
+    // every free particle and v_s = v0 (b = g).
+    bool linearised_at_start = true;
     const double* forces = nullptr;              // N, f(x_k, v_k), the dampers' included
     const double* masses = nullptr;              // kg
     const double* inverse_masses = nullptr;      // 1/kg; 0 marks a pinned particle
@@ -82,7 +86,7 @@ struct Job {
 
     Field3 rhs_change;      // g = h f(x_k, v_k) - M (v_k - v0), filtered where a particle is held
     Field3 rhs;             // b = g + A v_k (the residual pass forms it)
-    Field3 start;           // v_k
+    Field3 start;           // v_s, where the solve starts and its residual's scale is taken
     Field3 guess_change;    // the previous step's v1 - v0 (the warm start), kept between steps
     Field3 solution;        // v1, the iterate
     Field3 residual;        // r = b - A v1
@@ -105,7 +109,7 @@ struct RowSums {
 };
 
 // Pass 1, rows [begin, end): the direction terms of the springs that start on these rows,
-// g, v_k, the mass diagonal and the free mask, and the guess v_k + warm_start · (previous
+// g, v_s, the mass diagonal and the free mask, and the guess v_s + warm_start · (previous
 // change) into `solution`.
 void setup_rows_baseline(const Job& job, int begin, int end, double warm_start);
 void setup_rows_avx2(const Job& job, int begin, int end, double warm_start);
@@ -114,8 +118,8 @@ void setup_rows_avx512(const Job& job, int begin, int end, double warm_start);
 // The row passes are handed whole pairs of rows (begin even), so that the passes that
 // finish the residual can sum each pair into the first coarse level.
 //
-// Pass 2: the preconditioner; b = g + A v_k, r = b - A v1, z = P r; sums r·z, r·r, and
-// |g|² = |b - A v_k|² (the scale of the residual: the right-hand side of the Δv form).
+// Pass 2: the preconditioner; b, r = b - A v1, z = P r; sums r·z, r·r, and |b - A v_s|²
+// (the scale of the residual: the right-hand side of the Δv form from v_s).
 void residual_rows_baseline(const Job& job, int begin, int end, RowSums sums);
 void residual_rows_avx2(const Job& job, int begin, int end, RowSums sums);
 void residual_rows_avx512(const Job& job, int begin, int end, RowSums sums);
@@ -132,7 +136,7 @@ void update_rows_avx512(const Job& job, int begin, int end, float alpha, RowSums
 
 // After the solve, with contacts and `direction` = v1 - v_k: applied = A (v1 - v_k) without
 // the contact filter, so that A (v1 - v_k) - g = A v1 - b at a held particle is the impulse
-// its surface gave it.
+// its surface gave it (g unfiltered).
 void unfiltered_product_rows_baseline(const Job& job, int begin, int end);
 void unfiltered_product_rows_avx2(const Job& job, int begin, int end);
 void unfiltered_product_rows_avx512(const Job& job, int begin, int end);

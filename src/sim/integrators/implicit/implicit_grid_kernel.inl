@@ -321,7 +321,7 @@ void setup_rows(const Job& job, int begin, int end, double warm_start) {
                              there + padded, there + 2 * padded, d.stiffness, d.damping, h, iso, ax,
                              ay, az, cols);
         }
-        // g, v_k, the guess, the mass diagonal and the free mask.
+        // g, v_s, the guess, the mass diagonal and the free mask.
         for (int c = 0; c < cols; ++c) {
             const std::size_t p = first + static_cast<std::size_t>(c);
             const std::size_t i = base + static_cast<std::size_t>(c);
@@ -331,17 +331,18 @@ void setup_rows(const Job& job, int begin, int end, double warm_start) {
             job.mass_diagonal[i] = static_cast<float>(m + h * job.air_drag);
             const double* v = job.velocities + 3 * p;
             const double* v0 = job.initial_velocities + 3 * p;
+            const double* from = job.start_velocities + 3 * p;
             const double* f = job.forces + 3 * p;
             float* g[3] = {job.rhs_change.x, job.rhs_change.y, job.rhs_change.z};
-            float* vk[3] = {job.start.x, job.start.y, job.start.z};
+            float* vs[3] = {job.start.x, job.start.y, job.start.z};
             float* guess[3] = {job.solution.x, job.solution.y, job.solution.z};
             const float* change[3] = {job.guess_change.x, job.guess_change.y, job.guess_change.z};
             for (int axis = 0; axis < 3; ++axis) {
                 g[axis][i] =
                     is_free ? static_cast<float>(h * f[axis] - m * (v[axis] - v0[axis])) : 0.0f;
-                vk[axis][i] = is_free ? static_cast<float>(v[axis]) : 0.0f;
+                vs[axis][i] = is_free ? static_cast<float>(from[axis]) : 0.0f;
                 guess[axis][i] =
-                    is_free ? static_cast<float>(v[axis] + warm_start * change[axis][i]) : 0.0f;
+                    is_free ? static_cast<float>(from[axis] + warm_start * change[axis][i]) : 0.0f;
             }
         }
     }
@@ -425,17 +426,6 @@ void diagonal_row(const Job& job, int row, double* __restrict block) {
     }
 }
 
-// b = g + y over a row (y, the filtered A v_k, already in r); r = g, the residual at v_k.
-void form_rhs_row(const Job& job, int row) {
-    const std::size_t base = at(job, row);
-    for (int c = 0; c < job.cols; ++c) {
-        const std::size_t i = base + static_cast<std::size_t>(c);
-        job.rhs.x[i] = job.rhs_change.x[i] + job.residual.x[i];
-        job.rhs.y[i] = job.rhs_change.y[i] + job.residual.y[i];
-        job.rhs.z[i] = job.rhs_change.z[i] + job.residual.z[i];
-    }
-}
-
 // r = b - y over a row (y already in r).
 void subtract_from_rhs_row(const Job& job, int row) {
     const std::size_t base = at(job, row);
@@ -445,6 +435,20 @@ void subtract_from_rhs_row(const Job& job, int row) {
         job.residual.y[i] = job.rhs.y[i] - job.residual.y[i];
         job.residual.z[i] = job.rhs.z[i] - job.residual.z[i];
     }
+}
+
+// b = g + y (y = A v_s, filtered, already in r) where v_s = v_k, else b = g (v_k = 0), over a
+// row; then r = b - y, the residual at v_s.
+void form_rhs_row(const Job& job, int row) {
+    const std::size_t base = at(job, row);
+    const float with_start = job.linearised_at_start ? 1.0f : 0.0f;
+    for (int c = 0; c < job.cols; ++c) {
+        const std::size_t i = base + static_cast<std::size_t>(c);
+        job.rhs.x[i] = job.rhs_change.x[i] + with_start * job.residual.x[i];
+        job.rhs.y[i] = job.rhs_change.y[i] + with_start * job.residual.y[i];
+        job.rhs.z[i] = job.rhs_change.z[i] + with_start * job.residual.z[i];
+    }
+    subtract_from_rhs_row(job, row);
 }
 
 // The pair of rows starting at `row` (even) summed into their coarse nodes, in a fixed order
@@ -495,10 +499,10 @@ void residual_rows(const Job& job, int begin, int end, RowSums sums) {
     for (int row = begin; row < end; ++row) {
         diagonal_row(job, row, block.data());
         const std::size_t base = at(job, row);
-        // b from A v_k, and |g|² (the residual's scale); then r at the guess.
+        // b from A v_s, and |b - A v_s|² (the residual's scale); then r at the guess.
         at_start.row(row, job.residual);
         form_rhs_row(job, row);
-        sums.third[row] = row_dot(job.rhs_change, job.rhs_change, base, job.cols);
+        sums.third[row] = row_dot(job.residual, job.residual, base, job.cols);
         at_guess.row(row, job.residual);
         subtract_from_rhs_row(job, row);
         precondition_row(job, row);

@@ -57,7 +57,7 @@ void ImplicitGridSolver::prepare(int grid_rows, int grid_cols) {
     storage.assign(stride * arrays, 0.0f);
     row_sums.assign(4 * static_cast<std::size_t>(rows), 0.0);
     forces.assign(count, Vec3(0.0));
-    constrained_velocities.assign(count, Vec3(0.0));
+    first_iterate.assign(count, Vec3(0.0));
     fixed.assign(count, 0);
     has_previous_change = false;
     contacts.held.clear();  // their particles belonged to the old grid
@@ -78,7 +78,7 @@ ImplicitGridSolver& ImplicitGridSolver::operator=(const ImplicitGridSolver& othe
     storage = other.storage;
     row_sums = other.row_sums;
     forces = other.forces;
-    constrained_velocities = other.constrained_velocities;
+    first_iterate = other.first_iterate;
     fixed = other.fixed;
     job = other.job;
     multilevel = other.multilevel;
@@ -147,18 +147,19 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     const std::size_t count = cloth.particle_count();
     const double* inverse_masses = cloth.topology().inverse_masses.data();
     // Particles about to meet the solids (implicit_contacts.h), of those the pins and the
-    // hand leave free, chosen from the step's start; v_k meets their constraints, so the
-    // step is linearised with them on their surfaces.
+    // hand leave free, chosen from the step's start. A step that holds some is linearised at
+    // x0 (the first iterate v_k = 0 for every free particle): predicted at x0 + h v0, the
+    // sheet beside the particles a surface stops is seen still falling, several spacings
+    // away from them, and a sheet landing on a ball gained energy.
     const bool contacts = !field.solids.empty() || !solver.contacts.held.empty();
     if (contacts) {
         for (std::size_t p = 0; p < count; ++p) solver.fixed[p] = inverse_masses[p] == 0.0;
         for (const std::uint32_t p : field.held) solver.fixed[p] = 1;
         solver.contacts.choose(cloth, field.solids, field.gravity, dt, solver.fixed, job);
-        if (!solver.contacts.held.empty()) {
-            std::copy(at_velocities.begin(), at_velocities.end(),
-                      solver.constrained_velocities.begin());
-            solver.contacts.constrain(solver.constrained_velocities);
-            at_velocities = solver.constrained_velocities;
+        if (!solver.contacts.held.empty() && linearisation.velocities.empty()) {
+            for (std::size_t p = 0; p < count; ++p)
+                solver.first_iterate[p] = solver.fixed[p] ? at_velocities[p] : Vec3(0.0);
+            at_velocities = solver.first_iterate;
         }
     }
     for (std::size_t p = 0; p < count; ++p)
@@ -190,11 +191,18 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     job.positions = &at_positions.data()->x;
     job.velocities = &at_velocities.data()->x;
     job.initial_velocities = &cloth.velocities.data()->x;
+    // The solve starts from v0 and the warm start on a first iterate, from v_k on a later one.
+    job.linearised_at_start = at_velocities.data() != solver.first_iterate.data();
+    job.start_velocities = linearisation.velocities.empty() ? &cloth.velocities.data()->x
+                                                            : &at_velocities.data()->x;
     job.forces = &solver.forces.data()->x;
     job.masses = cloth.topology().masses.data();
     job.inverse_masses = cloth.topology().inverse_masses.data();
 
-    const double warm_start = settings.warm_start && solver.has_previous_change ? 1.0 : 0.0;
+    const double warm_start = settings.warm_start && solver.has_previous_change &&
+                                      linearisation.velocities.empty()
+                                  ? 1.0
+                                  : 0.0;
     const auto setup =
         kernel_of(level, implicit_kernel::setup_rows_baseline, implicit_kernel::setup_rows_avx2,
                   implicit_kernel::setup_rows_avx512);
@@ -299,11 +307,12 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
         // applied = A (v1 - v_k), unfiltered; the search direction is free after a solve.
         auto impulses = [&] {
             const implicit_kernel::Field3 &change = job.direction, &v1 = job.solution,
-                                          &vk = job.start;
+                                          &vs = job.start;
+            const float at_start = job.linearised_at_start ? 1.0f : 0.0f;  // v_k = v_s, or 0
             for (std::size_t i = 0; i < solver.stride; ++i) {
-                change.x[i] = v1.x[i] - vk.x[i];
-                change.y[i] = v1.y[i] - vk.y[i];
-                change.z[i] = v1.z[i] - vk.z[i];
+                change.x[i] = v1.x[i] - at_start * vs.x[i];
+                change.y[i] = v1.y[i] - at_start * vs.y[i];
+                change.z[i] = v1.z[i] - at_start * vs.z[i];
             }
             over_rows(solver, pool, [&](int begin, int end) { unfiltered(job, begin, end); });
         };

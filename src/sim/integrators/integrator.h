@@ -78,8 +78,8 @@ struct IntegratorScratch {
 struct IntegratorStatistics {
     std::uint64_t force_evaluations = 0;  // total calls of the force pass, for cost studies
     // Implicit Euler's last step: CG iterations over all its pieces, times it was halved
-    // and linearised again (implicit_euler.cpp), the relative residual of its last solve, and, when profiling,
-    // its phases summed over its pieces.
+    // and linearised again (implicit_euler.cpp), the relative residual of its last solve, and, when
+    // profiling, its phases summed over its pieces.
     int implicit_iterations = 0;
     int implicit_splits = 0;
     int implicit_newton_iterations = 0;  // linearised again where a piece ended

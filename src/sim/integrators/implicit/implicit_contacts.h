@@ -19,14 +19,14 @@
 // particle: the one it would cross deepest.
 //
 // A constraint is an equality, so it could pull. After the solve, A v1 - b at a held
-// particle is the impulse its surface gave it (N·s; b and g as in implicit_grid_kernel.h). Where one points into the solid and the
-// particle is outside it, the surface would have pulled: those particles are let go and the
-// step is solved again from where it stands (one round of an active-set method; Baraff and
-// Witkin release such constraints a step later instead, which left particles chattering
-// between held and free at 6 cm/s on a draped sheet). Where the impulse pushes, Coulomb
-// friction takes up to friction × that impulse from the particle's sliding momentum, as the
-// impulse response does (colliders.h). The contact pass after the step still runs and
-// catches whatever the constraints did not hold (a second surface, a particle let go).
+// particle is the impulse its surface gave it (N·s; b and g as in implicit_grid_kernel.h). Where
+// one points into the solid and the particle is outside it, the surface would have pulled: those
+// particles are let go and the step is solved again from where it stands (one round of an
+// active-set method; Baraff and Witkin release such constraints a step later instead, which left
+// particles chattering between held and free at 6 cm/s on a draped sheet). Where the impulse
+// pushes, Coulomb friction takes up to friction × that impulse from the particle's sliding
+// momentum, as the impulse response does (colliders.h). The contact pass after the step still runs
+// and catches whatever the constraints did not hold (a second surface, a particle let go).
 #pragma once
 
 #include <cstdint>

@@ -189,8 +189,7 @@ int step_or_split(Cloth& cloth, const ForceField& field, double dt, IntegratorWo
     // Not where the step held particles on solids: each solve settles which of them the
     // surface lets go in one round (implicit_contacts.h), so a sheet pulled off the ground
     // needs the halves' rounds.
-    for (int newton = 0; !kept && !held_contacts && newton < settings.newton_iterations;
-         ++newton) {
+    for (int newton = 0; !kept && !held_contacts && newton < settings.newton_iterations; ++newton) {
         ++work.statistics.implicit_newton_iterations;
         scratch.implicit_linearised_velocities.resize(count);
         std::copy(cloth.velocities.begin(), cloth.velocities.end(),

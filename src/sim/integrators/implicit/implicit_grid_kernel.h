@@ -57,9 +57,9 @@ struct Job {
     // Whether v_s = v_k (b = g + A v_s), or the step is linearised at x0 with v_k = 0 for
     // every free particle and v_s = v0 (b = g).
     bool linearised_at_start = true;
-    const double* forces = nullptr;              // N, f(x_k, v_k), the dampers' included
-    const double* masses = nullptr;              // kg
-    const double* inverse_masses = nullptr;      // 1/kg; 0 marks a pinned particle
+    const double* forces = nullptr;          // N, f(x_k, v_k), the dampers' included
+    const double* masses = nullptr;          // kg
+    const double* inverse_masses = nullptr;  // 1/kg; 0 marks a pinned particle
 
     float* mass_diagonal = nullptr;  // padded: m + h air_drag
     float* free = nullptr;           // padded: 1 for a free particle, 0 for a pinned one

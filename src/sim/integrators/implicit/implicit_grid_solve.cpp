@@ -140,9 +140,9 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     implicit_kernel::Job& job = solver.job;
     // The state the step is linearised at, x_k = x0 + h v_k (pins stay put), and the forces
     // there, f(x_k, v_k): gravity, the wind, air drag, the springs and their dampers.
-    std::span<const Vec3> at_velocities =
-        linearisation.velocities.empty() ? std::span<const Vec3>(cloth.velocities)
-                                         : linearisation.velocities;
+    std::span<const Vec3> at_velocities = linearisation.velocities.empty()
+                                              ? std::span<const Vec3>(cloth.velocities)
+                                              : linearisation.velocities;
     const std::span<Vec3> at_positions = linearisation.positions;
     const std::size_t count = cloth.particle_count();
     const double* inverse_masses = cloth.topology().inverse_masses.data();
@@ -163,8 +163,8 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
         }
     }
     for (std::size_t p = 0; p < count; ++p)
-        at_positions[p] =
-            inverse_masses[p] != 0.0 ? cloth.positions[p] + dt * at_velocities[p] : cloth.positions[p];
+        at_positions[p] = inverse_masses[p] != 0.0 ? cloth.positions[p] + dt * at_velocities[p]
+                                                   : cloth.positions[p];
     for (const std::uint32_t p : field.held)
         at_positions[p] = cloth.positions[p] + dt * at_velocities[p];
     if (!accumulate_grid_forces(cloth, field, at_positions, at_velocities, solver.forces, pool,
@@ -193,16 +193,15 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     job.initial_velocities = &cloth.velocities.data()->x;
     // The solve starts from v0 and the warm start on a first iterate, from v_k on a later one.
     job.linearised_at_start = at_velocities.data() != solver.first_iterate.data();
-    job.start_velocities = linearisation.velocities.empty() ? &cloth.velocities.data()->x
-                                                            : &at_velocities.data()->x;
+    job.start_velocities =
+        linearisation.velocities.empty() ? &cloth.velocities.data()->x : &at_velocities.data()->x;
     job.forces = &solver.forces.data()->x;
     job.masses = cloth.topology().masses.data();
     job.inverse_masses = cloth.topology().inverse_masses.data();
 
-    const double warm_start = settings.warm_start && solver.has_previous_change &&
-                                      linearisation.velocities.empty()
-                                  ? 1.0
-                                  : 0.0;
+    const double warm_start =
+        settings.warm_start && solver.has_previous_change && linearisation.velocities.empty() ? 1.0
+                                                                                              : 0.0;
     const auto setup =
         kernel_of(level, implicit_kernel::setup_rows_baseline, implicit_kernel::setup_rows_avx2,
                   implicit_kernel::setup_rows_avx512);

@@ -80,9 +80,9 @@ struct ImplicitGridSolver {
     std::size_t stride = 0;  // floats per array
     std::vector<float> storage;
     std::vector<double> row_sums;     // 3 per row
-    std::vector<Vec3> forces;              // N, f(x_k, v_k)
-    std::vector<Vec3> first_iterate;       // m/s, v_k of a step with contacts
-    std::vector<std::uint8_t> fixed;       // 1 where a pin or the hand fixes a particle
+    std::vector<Vec3> forces;         // N, f(x_k, v_k)
+    std::vector<Vec3> first_iterate;  // m/s, v_k of a step with contacts
+    std::vector<std::uint8_t> fixed;  // 1 where a pin or the hand fixes a particle
     std::vector<Vec3> zero_velocities;
     implicit_kernel::Job job;
     ImplicitMultilevel multilevel;

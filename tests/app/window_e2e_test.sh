@@ -63,6 +63,10 @@ wait_until() {
     sleep 0.05
   done
 }
+window_found() {
+  window=$(xdotool search --name "weft - e2e sheet" 2>/dev/null | head -1)
+  [ -n "$window" ]
+}
 frames_at_least() { [ "$(window_value frames)" -ge "$1" ] 2>/dev/null; }
 time_at_least() { awk -v t="$(window_value time)" -v s="$1" 'BEGIN { exit !(t != "" && t >= s) }'; }
 settled() {  # 2.5 s of simulated time, or paused (parameters no step can hold pause the run)
@@ -93,8 +97,8 @@ start_weft() {
   mkdir -p "$work/$name"
   (cd "$work/$name" && WEFT_CAPTURES="$work/$name/captures" WEFT_WINDOW_STATE="$work/$name/window_state" exec "$weft" "$scene" --size 800x600 --dump "$work/$name/state.csv" "$@" >"$work/$name/out.log" 2>&1) &
   weft_pid=$!
-  window=$(timeout 20 xdotool search --sync --name "weft - e2e sheet" | head -1)
-  [ -n "$window" ] || { echo "FAIL: no weft window appeared"; cat "$work/$name/out.log"; exit 1; }
+  window=""
+  wait_until "its window appeared" window_found || { cat "$work/$name/out.log"; exit 1; }
   wait_until "the sheet settled" settled
 }
 # Quits with Escape; weft must exit with status 0 (under ASan: no leak, no error at exit).

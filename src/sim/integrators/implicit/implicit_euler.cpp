@@ -254,10 +254,7 @@ bool take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
     const std::span<const Vec3> vk =
         first_iterate ? std::span<const Vec3>(cloth.velocities) : at.velocities;
     const std::span<Vec3> xk = at.positions;
-    const std::span<const double> inverse_masses = cloth.topology().inverse_masses;
-    for (std::size_t p = 0; p < count; ++p)
-        xk[p] = inverse_masses[p] != 0.0 ? cloth.positions[p] + dt * vk[p] : cloth.positions[p];
-    for (std::uint32_t p : field.held) xk[p] = cloth.positions[p] + dt * vk[p];
+    positions_at_iterate(cloth, vk, dt, xk);
     evaluate_forces(cloth, field, xk, vk, work);
 
     // Per-spring terms of h² K + h C at x_k.

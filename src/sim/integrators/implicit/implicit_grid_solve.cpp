@@ -125,6 +125,14 @@ void ImplicitGridSolver::bind() {
     job.contact_normal = take3();
 }
 
+void positions_at_iterate(const Cloth& cloth, std::span<const Vec3> velocities, double dt,
+                          std::span<Vec3> positions) {
+    const std::vector<double>& inverse_masses = cloth.topology().inverse_masses;
+    for (std::size_t p = 0; p < cloth.particle_count(); ++p)
+        positions[p] =
+            inverse_masses[p] != 0.0 ? cloth.positions[p] + dt * velocities[p] : cloth.positions[p];
+}
+
 bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
                               const ImplicitSolveSettings& settings, ImplicitGridSolver& solver,
                               WorkerPool* pool, SimdLevel level,
@@ -162,11 +170,7 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
             at_velocities = solver.first_iterate;
         }
     }
-    for (std::size_t p = 0; p < count; ++p)
-        at_positions[p] = inverse_masses[p] != 0.0 ? cloth.positions[p] + dt * at_velocities[p]
-                                                   : cloth.positions[p];
-    for (const std::uint32_t p : field.held)
-        at_positions[p] = cloth.positions[p] + dt * at_velocities[p];
+    positions_at_iterate(cloth, at_velocities, dt, at_positions);
     if (!accumulate_grid_forces(cloth, field, at_positions, at_velocities, solver.forces, pool,
                                 level))
         return false;

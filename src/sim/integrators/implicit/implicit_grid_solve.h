@@ -114,6 +114,11 @@ struct ImplicitLinearisation {
     std::span<Vec3> positions;         // m, out: x_k, one per particle
 };
 
+// x_k = x0 + h v_k into `positions`: the cloth's positions moved by `velocities` over dt,
+// except the pinned particles (the hand's are free particles whose v_k is the hand's).
+void positions_at_iterate(const Cloth& cloth, std::span<const Vec3> velocities, double dt,
+                          std::span<Vec3> positions);
+
 // One implicit Euler step of the structured solve, or false, touching nothing, when it
 // cannot take it: no usable grid stencil, or repulsion contacts (forces the general path
 // takes explicitly). Particles about to meet the field's impulse solids are held on their

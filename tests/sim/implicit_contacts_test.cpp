@@ -104,8 +104,9 @@ TEST(ImplicitContacts, ASheetDrapedOverABallAtTheFrameStepComesToRest) {
     // springs to neighbours the solve had placed for the old positions. Held inside the
     // solve, it comes to rest (the explicit reference at its own 0.18 ms step: 7 % stretched;
     // without friction, after 1.5 s, the two measured 7.6 % and 7.7 %). The friction holds
-    // what the landing stretched, and that is chaotic: dropped from heights 0.1 µm apart, the
-    // same sheet came to rest 33 % to 45 % stretched.
+    // what the landing stretched, and that is chaotic: dropped from heights a fraction of a
+    // micrometre apart, the same sheet comes to rest stretched by different amounts, so the
+    // bound leaves room for that spread (CHANGELOG).
     Scene scene;
     scene.cloth.rows = scene.cloth.cols = 64;
     scene.cloth.spacing = 0.012063;
@@ -140,7 +141,7 @@ TEST(ImplicitContacts, ASheetDrapedOverABallAtTheFrameStepComesToRest) {
     // a few particles of the hanging edges creeping at up to 7 cm/s (it lands at 1 m/s).
     EXPECT_LT(rms_speed, 0.02);                                 // m/s
     EXPECT_LT(fastest, 0.2);                                    // m/s
-    EXPECT_LT(largest_stretch_ratio(simulation.cloth()), 1.6);  // measured 1.37
+    EXPECT_LT(largest_stretch_ratio(simulation.cloth()), 1.6);
     const Vec3 center(0.0, 0.15, 0.0);
     for (const Vec3& x : simulation.cloth().positions)
         EXPECT_GT(glm::length(x - center), 0.15 - 1e-6);

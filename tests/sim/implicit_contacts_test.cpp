@@ -139,8 +139,8 @@ TEST(ImplicitContacts, ASheetDrapedOverABallAtTheFrameStepComesToRest) {
         std::sqrt(sum_of_squares / static_cast<double>(simulation.cloth().particle_count()));
     // At rest, to within what the inexact solve and the contacts leave: measured 7 mm/s rms,
     // a few particles of the hanging edges creeping at up to 7 cm/s (it lands at 1 m/s).
-    EXPECT_LT(rms_speed, 0.02);                                 // m/s
-    EXPECT_LT(fastest, 0.2);                                    // m/s
+    EXPECT_LT(rms_speed, 0.02);  // m/s
+    EXPECT_LT(fastest, 0.2);     // m/s
     EXPECT_LT(largest_stretch_ratio(simulation.cloth()), 1.6);
     const Vec3 center(0.0, 0.15, 0.0);
     for (const Vec3& x : simulation.cloth().positions)

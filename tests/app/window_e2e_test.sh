@@ -29,20 +29,21 @@ for tool in Xvfb xdotool; do
   command -v "$tool" >/dev/null || { echo "FAIL: $tool is missing (scripts/setup.sh installs it)"; exit 1; }
 done
 work=$(mktemp -d)
-display=""
 cleanup() {
   [ -n "${xvfb_pid:-}" ] && kill "$xvfb_pid" 2>/dev/null
   rm -rf "$work"
 }
 trap cleanup EXIT
-# A free display number, and an X server on it.
-for n in $(seq 90 130); do
-  if [ ! -e "/tmp/.X$n-lock" ] && [ ! -e "/tmp/.X11-unix/X$n" ]; then display=":$n"; break; fi
-done
-[ -n "$display" ] || { echo "FAIL: no free X display"; exit 1; }
-Xvfb "$display" -screen 0 1400x900x24 -nolisten tcp >/dev/null 2>&1 &
+# An X server on a display it picks itself: with -displayfd, Xvfb takes a display no other
+# server holds (a lock file, a socket file or an abstract socket) and writes its number only
+# once it accepts connections, so weft never starts against a server that is not there yet.
+Xvfb -displayfd 3 -screen 0 1400x900x24 -nolisten tcp 3>"$work/display" >"$work/xvfb.log" 2>&1 &
 xvfb_pid=$!
-for _ in $(seq 50); do [ -e "/tmp/.X11-unix/X${display#:}" ] && break; sleep 0.1; done
+until [ -s "$work/display" ]; do
+  kill -0 "$xvfb_pid" 2>/dev/null || { echo "FAIL: Xvfb exited before it took a display"; cat "$work/xvfb.log"; exit 1; }
+  sleep 0.05
+done
+display=":$(head -1 "$work/display")"
 export DISPLAY=$display
 failures=0
 passes=0

@@ -219,6 +219,40 @@ TEST(Grab, AHandBeyondReachSlipsInsteadOfStretchingTheCloth) {
     }
 }
 
+// Thrown far beyond reach, a frame-sized implicit step under the hand fails every try of its
+// linearisation. Where the grip has slipped by then, the step is not split down to its
+// deepest level first (dozens of solves for a step thrown away): the held step's tries and
+// the step taken again without the hand are all it costs.
+TEST(Grab, ImplicitEulerLetsGoBeyondReachWithoutSplittingTheHeldStep) {
+    SceneLoadResult loaded =
+        load_scene_file(std::string(WEFT_SOURCE_DIR) + "/assets/scenes/cloth_128.toml",
+                        {"cloth.rows=64", "cloth.cols=64",
+                         "cloth.spacing=0.018254",         // m: 1.15 m / 63
+                         "cloth.particle_mass=0.0000666",  // kg: 0.2 kg/m² × spacing²
+                         "solver.dt=0.0333333333333333"});
+    ASSERT_TRUE(loaded.ok());
+    Simulation simulation(*loaded.scene);
+    while (simulation.time() < 0.5) ASSERT_FALSE(simulation.step().diverged());
+    const Cloth& cloth = simulation.cloth();
+    const auto grabbed = static_cast<std::uint32_t>((cloth.rows - 1) * cloth.cols + cloth.cols / 2);
+    const Vec3 start = cloth.positions[grabbed];
+    simulation.start_grab(grab_cloth(cloth, {0, grabbed, 1.0, start}, 0.08));
+    simulation.pull_to(start + Vec3(-0.8, -0.6, 0.8));
+    bool slipped = false;
+    for (int step = 0; step < 10 && !slipped; ++step) {
+        const std::uint64_t before = simulation.force_evaluations();
+        const StepReport report = simulation.step();
+        ASSERT_FALSE(report.diverged()) << *report.divergence;
+        slipped = report.hand_slipped;
+        if (slipped) {
+            const int tries = 1 + ImplicitSolveSettings{}.newton_iterations;
+            EXPECT_LE(simulation.force_evaluations() - before,
+                      static_cast<std::uint64_t>(2 * tries));
+        }
+    }
+    EXPECT_TRUE(slipped);
+}
+
 // Within reach the grip holds: a slow lift of a corner never slips.
 TEST(Grab, TheGripHoldsWithinReach) {
     Simulation simulation(sheet());

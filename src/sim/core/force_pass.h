@@ -2,6 +2,7 @@
 // All integrators share it; they differ only in where they evaluate it.
 #pragma once
 
+#include <cstdint>
 #include <span>
 
 #include "parallel/worker_pool.h"
@@ -11,6 +12,13 @@
 
 namespace weft {
 
+// A spring from a particle the hand holds to a free one (grab.h).
+struct HandGripSpring {
+    std::uint32_t held;   // particle in the hand
+    std::uint32_t other;  // particle outside it
+    double rest_length;   // m
+};
+
 // The external force field, constant over a step.
 struct ForceField {
     Vec3 gravity{0.0, -9.81, 0.0};  // m/s²
@@ -19,6 +27,11 @@ struct ForceField {
     // The particles the hand holds this step (grab.h), ascending: their velocities are
     // prescribed. Only the implicit solves read it; other steps are corrected after.
     std::span<const std::uint32_t> held;
+    // The hand's grip, where the step's solve answers the hand (implicit Euler): the springs
+    // at the hand and the stretch, in rest lengths, past which the grip slips; 0: the grip is
+    // not judged within the step.
+    std::span<const HandGripSpring> grip_springs;
+    double grip_stretch = 0.0;
     std::span<const Collider> colliders;  // those with repulsion contacts, if any
     // Every collider, for the structured implicit step, which holds particles on the impulse
     // ones inside its solve (integrators/implicit_contacts.h); the other steps leave those to

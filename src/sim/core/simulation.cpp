@@ -99,7 +99,8 @@ StepReport Simulation::step() {
     // The grip (grab.h). An explicit step cannot answer the hand within itself: its grip is
     // judged before the step, where the hand's move would leave the springs at the hand.
     // Implicit Euler's solve answers the hand, so its grip is judged after the solve: where
-    // it slipped, the step is taken again from the same state without the hand.
+    // it slipped, the step is taken again from the same state without the hand. The solve
+    // sees the grip too, and does not refine a try that failed past it (implicit_euler.cpp).
     if (!grab_.active()) return take_step(false);
     find_grip_springs(grab_, cloth_);
     prescribe_hand_motion(grab_, cloth_, dt_);
@@ -152,10 +153,19 @@ StepReport Simulation::take_step(bool judge_grip) {
     PhaseClock clock(profiling());
     StepInProgress step(*this);
     begin_step(step, report);
+    workspace_.statistics.implicit_hand_let_go = false;
+    if (judge_grip) {
+        field_.grip_springs = grab_.grip_springs;
+        field_.grip_stretch = grab_.grip_stretch;
+    }
     integrate(integrator_, cloth_, field_, dt_, workspace_);
     clear_step_field();
     clock.lap(report.times.integrate);
     report.times.implicit = workspace_.statistics.implicit_times;
+    if (judge_grip && workspace_.statistics.implicit_hand_let_go) {
+        report.hand_slipped = true;  // the solve found the grip slipped; step() retakes it
+        return report;
+    }
     limit_strain_after_step(step);
     clock.lap(report.times.strain_limit);
     report.contacts = resolve_contacts(step);
@@ -208,6 +218,8 @@ void Simulation::begin_step(StepInProgress& step, StepReport& report) {
 
 void Simulation::clear_step_field() {
     field_.held = {};
+    field_.grip_springs = {};
+    field_.grip_stretch = 0.0;
     field_.colliders = {};
     field_.solids = {};
     workspace_.on_the_way.after_rows = nullptr;

@@ -83,6 +83,7 @@ struct IntegratorStatistics {
     int implicit_iterations = 0;
     int implicit_splits = 0;
     int implicit_newton_iterations = 0;  // linearised again where a piece ended
+    bool implicit_hand_let_go = false;   // a held step stopped where its grip slipped
     double implicit_relative_residual = 0.0;
     ImplicitPhaseTimes implicit_times;
 };

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "sim/core/cloth.h"
+#include "sim/core/force_pass.h"
 #include "sim/interaction/picking.h"
 
 namespace weft {
@@ -48,11 +49,7 @@ struct Grab {
     double last_pull_time = 0.0;  // s, simulated time of the last move of the target
 
     // The springs from a held particle to a free one, for the grip (ends as in the cloth).
-    struct GripSpring {
-        std::uint32_t held;   // particle in the hand
-        std::uint32_t other;  // particle outside it
-        double rest_length;   // m
-    };
+    using GripSpring = HandGripSpring;
     std::vector<GripSpring> grip_springs;
     std::uint64_t grip_topology = 0;  // the topology version grip_springs were found in
     static constexpr double default_grip_stretch = 3.0;  // rest lengths

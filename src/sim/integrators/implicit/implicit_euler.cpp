@@ -135,8 +135,11 @@ double largest_linearisation_error(const Cloth& cloth, std::span<const Vec3> sta
 // back, the springs it whips round are seen stretched), up to newton_iterations times;
 // then in halves: the error of the linearisation falls as the square of the step's motion.
 // A hand pulling a sheet taut stretches its springs along themselves, where the
-// linearisation is close to exact, and is not split. Returns the depth of the finest
-// piece taken.
+// linearisation is close to exact, and is not split. A hand far beyond the sheet's reach
+// fails every try, and each half splits again down to the deepest level, dozens of solves
+// for a step that is thrown away when the grip slips after it: a try that failed with a
+// spring at the hand past the grip ends the step. Returns the depth of the
+// finest piece taken.
 int step_or_split(Cloth& cloth, const ForceField& field, double dt, IntegratorWorkspace& work,
                   int depth) {
     const ImplicitSolveSettings& settings = work.settings.implicit;
@@ -185,6 +188,15 @@ int step_or_split(Cloth& cloth, const ForceField& field, double dt, IntegratorWo
         clock.lap(work.statistics.implicit_times.split_checks);
         return kept;
     };
+    // The hand's grip (grab.h), judged on a try that failed.
+    auto grip_slipped = [&] {
+        if (!(field.grip_stretch > 0.0)) return false;
+        for (const HandGripSpring& spring : field.grip_springs)
+            if (glm::length(cloth.positions[spring.other] - cloth.positions[spring.held]) >
+                field.grip_stretch * spring.rest_length)
+                return true;
+        return false;
+    };
     bool kept = step_linearised_at({});
     // Not where the step held particles on solids: each solve settles which of them the
     // surface lets go in one round (implicit_contacts.h), so a sheet pulled off the ground
@@ -198,10 +210,21 @@ int step_or_split(Cloth& cloth, const ForceField& field, double dt, IntegratorWo
         kept = step_linearised_at(scratch.implicit_linearised_velocities);
     }
     if (kept || !may_split) return depth;
+    // Still failed after its Newton iterations, and past the grip: the hand lets go, and the
+    // simulation takes the step again without it, so there is nothing to refine, in this
+    // piece or the ones after it. A try that held particles on solids took no Newton
+    // iterations, and the halves settle which of them the surface lets go: a hand lifting a
+    // sheet off the ground seems past the grip in the whole step and in its halves, and is
+    // within it from the quarters on. Such tries are judged from the quarters on.
+    if ((!held_contacts || depth > 1) && grip_slipped()) {
+        work.statistics.implicit_hand_let_go = true;
+        return depth;
+    }
     ++work.statistics.implicit_splits;
     go_back_to_start();
     clock.lap(work.statistics.implicit_times.split_checks);
     const int first = step_or_split(cloth, field, 0.5 * dt, work, depth + 1);
+    if (work.statistics.implicit_hand_let_go) return first;
     return std::max(first, step_or_split(cloth, field, 0.5 * dt, work, depth + 1));
 }
 
@@ -212,6 +235,7 @@ void step_implicit_euler(Cloth& cloth, const ForceField& field, double dt,
     work.statistics.implicit_iterations = 0;
     work.statistics.implicit_splits = 0;
     work.statistics.implicit_newton_iterations = 0;
+    work.statistics.implicit_hand_let_go = false;
     // A step-size controller's memory: a step that had to be split is followed by one that
     // starts one level coarser than its finest piece, not by a whole step that would most
     // likely fail again and be thrown away. Each step that needs no split of its own takes
@@ -220,9 +244,11 @@ void step_implicit_euler(Cloth& cloth, const ForceField& field, double dt,
         std::min(work.history.implicit_start_depth, work.settings.implicit.max_split_depth);
     const int pieces = 1 << start;
     int finest = start;
-    for (int piece = 0; piece < pieces; ++piece)
+    for (int piece = 0; piece < pieces && !work.statistics.implicit_hand_let_go; ++piece)
         finest = std::max(finest, step_or_split(cloth, field, dt / pieces, work, start));
-    work.history.implicit_start_depth = std::max(0, finest - 1);
+    // A step the hand let go of is taken again without it: it says nothing of the next.
+    if (!work.statistics.implicit_hand_let_go)
+        work.history.implicit_start_depth = std::max(0, finest - 1);
 }
 
 namespace {

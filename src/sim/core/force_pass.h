@@ -2,22 +2,15 @@
 // All integrators share it; they differ only in where they evaluate it.
 #pragma once
 
-#include <cstdint>
 #include <span>
 
 #include "parallel/worker_pool.h"
 #include "sim/collision/colliders.h"
 #include "sim/core/cloth.h"
+#include "sim/core/hand_grip.h"
 #include "sim/grid/kernel_build.h"
 
 namespace weft {
-
-// A spring from a particle the hand holds to a free one (grab.h).
-struct HandGripSpring {
-    std::uint32_t held;   // particle in the hand
-    std::uint32_t other;  // particle outside it
-    double rest_length;   // m
-};
 
 // The external force field, constant over a step.
 struct ForceField {

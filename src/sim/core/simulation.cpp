@@ -153,7 +153,6 @@ StepReport Simulation::take_step(bool judge_grip) {
     PhaseClock clock(profiling());
     StepInProgress step(*this);
     begin_step(step, report);
-    workspace_.statistics.implicit_hand_let_go = false;
     if (judge_grip) {
         field_.grip_springs = grab_.grip_springs;
         field_.grip_stretch = grab_.grip_stretch;

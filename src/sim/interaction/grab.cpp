@@ -103,26 +103,8 @@ void hold_in_hand(const Grab& grab, Cloth& cloth) {
     }
 }
 
-namespace {
-
-// The grip springs' largest stretch with the held end at held(k) and the other at other(p).
-template <class HeldEnd, class OtherEnd>
-double largest_stretch(const Grab& grab, HeldEnd held, OtherEnd other) {
-    double largest_squared = 1.0;
-    for (const Grab::GripSpring& spring : grab.grip_springs) {
-        const Vec3 d = other(spring.other) - held(spring.held);
-        const double rest_squared = spring.rest_length * spring.rest_length;
-        if (!(rest_squared > 0.0)) continue;
-        largest_squared = std::max(largest_squared, glm::dot(d, d) / rest_squared);
-    }
-    return std::sqrt(largest_squared);
-}
-
-}  // namespace
-
 double largest_grip_stretch(const Grab& grab, const Cloth& cloth) {
-    const auto at = [&](std::uint32_t p) { return cloth.positions[p]; };
-    return largest_stretch(grab, at, at);
+    return largest_grip_stretch(grab.grip_springs, cloth.positions);
 }
 
 double coming_grip_stretch(const Grab& grab, const Cloth& cloth, double dt) {
@@ -134,7 +116,7 @@ double coming_grip_stretch(const Grab& grab, const Cloth& cloth, double dt) {
     const auto coming = [&](std::uint32_t p) {
         return cloth.positions[p] + dt * cloth.velocities[p];
     };
-    return largest_stretch(grab, goal, coming);
+    return largest_grip_stretch(grab.grip_springs, goal, coming);
 }
 
 }  // namespace weft

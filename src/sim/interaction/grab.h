@@ -28,7 +28,7 @@
 #include <vector>
 
 #include "sim/core/cloth.h"
-#include "sim/core/force_pass.h"
+#include "sim/core/hand_grip.h"
 #include "sim/interaction/picking.h"
 
 namespace weft {

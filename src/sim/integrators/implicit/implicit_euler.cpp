@@ -188,14 +188,10 @@ int step_or_split(Cloth& cloth, const ForceField& field, double dt, IntegratorWo
         clock.lap(work.statistics.implicit_times.split_checks);
         return kept;
     };
-    // The hand's grip (grab.h), judged on a try that failed.
+    // The hand's grip (grab.h), judged on a try that failed as the simulation judges it.
     auto grip_slipped = [&] {
-        if (!(field.grip_stretch > 0.0)) return false;
-        for (const HandGripSpring& spring : field.grip_springs)
-            if (glm::length(cloth.positions[spring.other] - cloth.positions[spring.held]) >
-                field.grip_stretch * spring.rest_length)
-                return true;
-        return false;
+        return field.grip_stretch > 0.0 &&
+               largest_grip_stretch(field.grip_springs, cloth.positions) > field.grip_stretch;
     };
     bool kept = step_linearised_at({});
     // Not where the step held particles on solids: each solve settles which of them the

@@ -37,7 +37,9 @@ trap cleanup EXIT
 # An X server on a display it picks itself: with -displayfd, Xvfb takes a display no other
 # server holds (a lock file, a socket file or an abstract socket) and writes its number only
 # once it accepts connections, so weft never starts against a server that is not there yet.
-Xvfb -displayfd 3 -screen 0 1400x900x24 -nolisten tcp 3>"$work/display" >"$work/xvfb.log" 2>&1 &
+# -noreset: by default the server resets when its last client leaves, and a weft started
+# while it resets finds no display.
+Xvfb -displayfd 3 -noreset -screen 0 1400x900x24 -nolisten tcp 3>"$work/display" >"$work/xvfb.log" 2>&1 &
 xvfb_pid=$!
 until [ -s "$work/display" ]; do
   kill -0 "$xvfb_pid" 2>/dev/null || { echo "FAIL: Xvfb exited before it took a display"; cat "$work/xvfb.log"; exit 1; }

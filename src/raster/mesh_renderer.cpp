@@ -240,14 +240,14 @@ void bin_triangle_run(const PreparedMesh& prepared, std::size_t begin, std::size
     const WindowVertex* window = prepared.window.data();
     const PixelRect viewport{0, 0, prepared.width, prepared.height};
     std::vector<std::uint32_t>* lists = bands.lists.data() + slice * bands.band_count;
-    const std::int64_t rows_per_band = std::int64_t{bands.band_height} * subpixel_scale;
-    // The band of a non-negative window row: a shift when bands are a power of two rows
-    // high (the frame's are), since a 64-bit division per corner took a sixth of binning.
-    const int band_shift = std::has_single_bit(static_cast<std::uint64_t>(rows_per_band))
-                               ? std::countr_zero(static_cast<std::uint64_t>(rows_per_band))
+    // The band of a pixel row: a shift when bands are a power of two rows high (the
+    // frame's are), since a division per triangle took a sixth of binning.
+    const int band_shift = std::has_single_bit(static_cast<unsigned>(bands.band_height))
+                               ? std::countr_zero(static_cast<unsigned>(bands.band_height))
                                : -1;
-    auto band_of = [&](std::int64_t row) {
-        return static_cast<int>(band_shift >= 0 ? row >> band_shift : row / rows_per_band);
+    auto band_of = [&](int row) {
+        return std::min(band_shift >= 0 ? row >> band_shift : row / bands.band_height,
+                        bands.band_count - 1);
     };
     for (std::size_t index = begin; index < end; ++index) {
         const TriangleIndices& t = prepared.mesh.triangles[index];
@@ -256,14 +256,13 @@ void bin_triangle_run(const PreparedMesh& prepared, std::size_t begin, std::size
         if (codes.culled()) continue;
         int first = 0, last = bands.band_count - 1;
         if (!codes.needs_clipping()) {
-            const WindowVertex &a = window[t[0]], &b = window[t[1]], &c = window[t[2]];
-            if (!may_cover_pixels(a, b, c, viewport)) continue;
-            // The bands of the rows between its corners (on the viewport: covered pixels
-            // are), with the draw's own pixel of margin.
-            const std::int64_t top = std::min({a.y, b.y, c.y}) - subpixel_scale;
-            const std::int64_t bottom = std::max({a.y, b.y, c.y}) + subpixel_scale;
-            first = band_of(std::max<std::int64_t>(top, 0));
-            last = std::min(band_of(std::max<std::int64_t>(bottom, 0)), bands.band_count - 1);
+            // The bands of the rows of the pixel centres it may cover. Many triangles of a
+            // sheet seen whole cover none, and go into no band.
+            const CoveredRows rows =
+                covered_rows(window[t[0]], window[t[1]], window[t[2]], viewport);
+            if (rows.empty()) continue;
+            first = band_of(rows.first);
+            last = band_of(rows.last);
         }
         for (int band = first; band <= last; ++band)
             lists[band].push_back(static_cast<std::uint32_t>(index));

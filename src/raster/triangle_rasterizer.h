@@ -31,6 +31,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -128,45 +129,102 @@ void traverse_blocks(Framebuffer& framebuffer, const RasterState& state, const T
     }
 }
 
-// Stages 4–6 for one set-up triangle, pixel by pixel.
+// Stages 5–6 for the covered pixel centres of one set-up triangle: depth test, the
+// perspective-correct varyings, the shader. Both pixel loops below shade through it, so
+// whichever of them takes a triangle, its fragments are the same to the bit. Everything it
+// reads is copied in once per triangle: colour stores go through unsigned char, which may
+// alias anything, so values read through a reference would be reloaded after every pixel
+// written.
 //
-// Everything the loop reads is copied into locals first: colour stores go through unsigned
-// char, which may alias anything, so values read through a reference would be reloaded
-// after every pixel written.
-//
-// Its varyings come as each setup vertex's varyings divided by its w: a/w and 1/w are affine
+// The varyings come as each setup vertex's varyings divided by its w: a/w and 1/w are affine
 // in screen space, so their barycentric blend divided by the blended 1/w is the
 // perspective-correct value (the same trick GPUs use).
 template <class Shader>
+struct PixelShading {
+    Rgba8* colours;
+    float* depths;
+    std::size_t width;
+    int varying_count;
+    bool depth_test, depth_write;
+    std::int64_t bias0, bias1, bias2;
+    float inverse_area;
+    float depth0, depth1, depth2;
+    float inverse_w0, inverse_w1, inverse_w2;
+    std::array<std::array<float, max_varyings>, 3> varying_over_w;
+    std::array<float, max_varyings> varyings;  // the first varying_count are set per pixel
+    Fragment fragment;
+
+    PixelShading(Framebuffer& framebuffer, const RasterState& state, const TriangleSetup& setup,
+                 const float* const (&given_over_w)[3])
+        : colours(framebuffer.colours().data()),
+          depths(framebuffer.depths().data()),
+          width(static_cast<std::size_t>(framebuffer.width())),
+          varying_count(varying_count_of<Shader>(state)),
+          depth_test(state.depth_test),
+          depth_write(state.depth_write),
+          bias0(setup.bias[0]),
+          bias1(setup.bias[1]),
+          bias2(setup.bias[2]),
+          inverse_area(setup.inverse_doubled_area),
+          depth0(setup.depth[0]),
+          depth1(setup.depth[1]),
+          depth2(setup.depth[2]),
+          inverse_w0(setup.inverse_w[0]),
+          inverse_w1(setup.inverse_w[1]),
+          inverse_w2(setup.inverse_w[2]) {
+        for (int i = 0; i < 3; ++i)
+            for (int k = 0; k < varying_count; ++k) varying_over_w[i][k] = given_over_w[i][k];
+        fragment.front_facing = setup.front_facing;
+        fragment.varyings = varyings.data();
+    }
+    PixelShading(const PixelShading&) = delete;
+    PixelShading& operator=(const PixelShading&) = delete;
+
+    // Pixel (x, y), whose centre is covered, with biased edge values e0, e1, e2.
+    void shade(int x, int y, std::int64_t e0, std::int64_t e1, std::int64_t e2, Shader& shader) {
+        // Depth: window depth is affine in screen space, so plain barycentrics suffice.
+        const float b0 = static_cast<float>(e0 - bias0) * inverse_area;
+        const float b1 = static_cast<float>(e1 - bias1) * inverse_area;
+        const float b2 = static_cast<float>(e2 - bias2) * inverse_area;
+        const float depth = b0 * depth0 + b1 * depth1 + b2 * depth2;
+        const std::size_t index = static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x);
+        if (depth_test && !(depth < depths[index])) return;
+
+        // Shade: perspective-correct varyings, then the shader decides the colour.
+        if (varying_count > 0) {
+            const float w = 1.0f / (b0 * inverse_w0 + b1 * inverse_w1 + b2 * inverse_w2);
+            for (int k = 0; k < varying_count; ++k) {
+                varyings[k] = (b0 * varying_over_w[0][k] + b1 * varying_over_w[1][k] +
+                               b2 * varying_over_w[2][k]) *
+                              w;
+            }
+        }
+        fragment.x = x;
+        fragment.y = y;
+        fragment.depth = depth;
+        if constexpr (is_deferred<Shader>()) {
+            if (depth_write) depths[index] = depth;
+            shader.defer(index, static_cast<const Fragment&>(fragment));
+        } else {
+            colours[index] = shader(static_cast<const Fragment&>(fragment));
+            if (depth_write) depths[index] = depth;
+        }
+    }
+};
+
+// Stages 4–6 for one set-up triangle, pixel by pixel, given each setup vertex's varyings
+// divided by its w.
+template <class Shader>
 void traverse_pixels(Framebuffer& framebuffer, const RasterState& state, const TriangleSetup& setup,
                      const float* const (&given_over_w)[3], Shader& shader) {
-    const std::size_t width = static_cast<std::size_t>(framebuffer.width());
-    Rgba8* const colours = framebuffer.colours().data();
-    float* const depths = framebuffer.depths().data();
-    const int varying_count = varying_count_of<Shader>(state);
-    const bool depth_test = state.depth_test;
-    const bool depth_write = state.depth_write;
     const int x_begin = setup.x_begin, x_end = setup.x_end;
     const std::int64_t step_x0 = setup.step_x[0], step_x1 = setup.step_x[1],
                        step_x2 = setup.step_x[2];
-    const std::int64_t bias0 = setup.bias[0], bias1 = setup.bias[1], bias2 = setup.bias[2];
     const double inverse_step_x0 = setup.inverse_step_x[0],
                  inverse_step_x1 = setup.inverse_step_x[1],
                  inverse_step_x2 = setup.inverse_step_x[2];
     const bool may_skip = inverse_step_x0 + inverse_step_x1 + inverse_step_x2 > 0.0;
-    const float inverse_area = setup.inverse_doubled_area;
-    const float depth0 = setup.depth[0], depth1 = setup.depth[1], depth2 = setup.depth[2];
-    const float inverse_w0 = setup.inverse_w[0], inverse_w1 = setup.inverse_w[1],
-                inverse_w2 = setup.inverse_w[2];
-
-    std::array<std::array<float, max_varyings>, 3> varying_over_w;
-    for (int i = 0; i < 3; ++i)
-        for (int k = 0; k < varying_count; ++k) varying_over_w[i][k] = given_over_w[i][k];
-
-    std::array<float, max_varyings> varyings;  // the first varying_count are set per pixel
-    Fragment fragment;
-    fragment.front_facing = setup.front_facing;
-    fragment.varyings = varyings.data();
+    PixelShading<Shader> pixels(framebuffer, state, setup, given_over_w);
 
     std::int64_t row0 = setup.edge_origin[0], row1 = setup.edge_origin[1],
                  row2 = setup.edge_origin[2];
@@ -197,7 +255,6 @@ void traverse_pixels(Framebuffer& framebuffer, const RasterState& state, const T
             }
         }
 
-        const std::size_t row_offset = static_cast<std::size_t>(y) * width;
         bool entered = false;
         for (; x < x_end; ++x, e0 += step_x0, e1 += step_x1, e2 += step_x2) {
             if ((e0 | e1 | e2) < 0) {
@@ -205,35 +262,46 @@ void traverse_pixels(Framebuffer& framebuffer, const RasterState& state, const T
                 continue;
             }
             entered = true;
-
-            // Depth: window depth is affine in screen space, so plain barycentrics suffice.
-            const float b0 = static_cast<float>(e0 - bias0) * inverse_area;
-            const float b1 = static_cast<float>(e1 - bias1) * inverse_area;
-            const float b2 = static_cast<float>(e2 - bias2) * inverse_area;
-            const float depth = b0 * depth0 + b1 * depth1 + b2 * depth2;
-            const std::size_t index = row_offset + static_cast<std::size_t>(x);
-            if (depth_test && !(depth < depths[index])) continue;
-
-            // Shade: perspective-correct varyings, then the shader decides the colour.
-            if (varying_count > 0) {
-                const float w = 1.0f / (b0 * inverse_w0 + b1 * inverse_w1 + b2 * inverse_w2);
-                for (int k = 0; k < varying_count; ++k) {
-                    varyings[k] = (b0 * varying_over_w[0][k] + b1 * varying_over_w[1][k] +
-                                   b2 * varying_over_w[2][k]) *
-                                  w;
-                }
-            }
-            fragment.x = x;
-            fragment.y = y;
-            fragment.depth = depth;
-            if constexpr (is_deferred<Shader>()) {
-                if (depth_write) depths[index] = depth;
-                shader.defer(index, static_cast<const Fragment&>(fragment));
-            } else {
-                colours[index] = shader(static_cast<const Fragment&>(fragment));
-                if (depth_write) depths[index] = depth;
-            }
+            pixels.shade(x, y, e0, e1, e2, shader);
         }
+    }
+}
+
+// Boxes at most this many pixel centres wide and high take traverse_tiny.
+inline constexpr int tiny_box_side = 2;
+
+// Stages 4–6 for a set-up triangle whose box holds at most 2×2 pixel centres: a cloth seen
+// whole can have about as many triangles as pixels, and nearly all of them are this small.
+// Coverage of the (up to) four centres is decided first, without a branch per centre, from
+// the same integer edge values the pixel loop steps to, and only the covered centres are
+// shaded, in the pixel loop's order and through the same PixelShading.
+template <class Shader>
+void traverse_tiny(Framebuffer& framebuffer, const RasterState& state, const TriangleSetup& setup,
+                   const float* const (&varying_over_w)[3], Shader& shader) {
+    // All four centres are evaluated whatever the box's size, so that no branch depends
+    // on the triangle's shape; those outside the box are masked out.
+    std::int64_t edges[tiny_box_side * tiny_box_side][3];
+    std::int64_t any_outside[tiny_box_side * tiny_box_side] = {0, 0, 0, 0};
+    for (int i = 0; i < 3; ++i) {
+        edges[0][i] = setup.edge_origin[i];
+        edges[1][i] = setup.edge_origin[i] + setup.step_x[i];
+        edges[2][i] = setup.edge_origin[i] + setup.step_y[i];
+        edges[3][i] = setup.edge_origin[i] + setup.step_x[i] + setup.step_y[i];
+        for (int k = 0; k < tiny_box_side * tiny_box_side; ++k) any_outside[k] |= edges[k][i];
+    }
+    const unsigned in_box = setup.x_end - setup.x_begin == 2
+                                ? (setup.y_end - setup.y_begin == 2 ? 0b1111u : 0b0011u)
+                                : (setup.y_end - setup.y_begin == 2 ? 0b0101u : 0b0001u);
+    unsigned covered = 0;  // bit (row · 2 + column) for each covered centre
+    for (int k = 0; k < tiny_box_side * tiny_box_side; ++k)
+        covered |= static_cast<unsigned>(any_outside[k] >= 0) << k;
+    covered &= in_box;
+    if (covered == 0) return;
+    PixelShading<Shader> pixels(framebuffer, state, setup, varying_over_w);
+    for (; covered != 0; covered &= covered - 1) {
+        const int k = std::countr_zero(covered);
+        pixels.shade(setup.x_begin + k % tiny_box_side, setup.y_begin + k / tiny_box_side,
+                     edges[k][0], edges[k][1], edges[k][2], shader);
     }
 }
 
@@ -251,6 +319,11 @@ void traverse_and_shade(Framebuffer& framebuffer, const RasterState& state,
                             varying_count_of<Shader>(state), shader);
             return;
         }
+    }
+    if (setup.x_end - setup.x_begin <= tiny_box_side &&
+        setup.y_end - setup.y_begin <= tiny_box_side) {
+        traverse_tiny(framebuffer, state, setup, given_over_w, shader);
+        return;
     }
     traverse_pixels(framebuffer, state, setup, given_over_w, shader);
 }

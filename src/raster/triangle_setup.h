@@ -116,6 +116,22 @@ inline PixelRect covered_box(const WindowVertex& p0, const WindowVertex& p1, con
             static_cast<int>(y_end)};
 }
 
+// The edge function of the directed edge a→b, biased by the top-left rule: a point
+// (x, y) in 1/256 pixel is on the inside when at(x, y) >= 0.
+struct EdgeFunction {
+    std::int64_t gradient_x, gradient_y, bias;
+    std::int64_t a_x, a_y;
+
+    EdgeFunction(const WindowVertex& a, const WindowVertex& b)
+        : gradient_x(a.y - b.y), gradient_y(b.x - a.x), a_x(a.x), a_y(a.y) {
+        const bool top_left = gradient_x > 0 || (gradient_x == 0 && gradient_y > 0);
+        bias = top_left ? 0 : -1;
+    }
+    std::int64_t at(std::int64_t x, std::int64_t y) const {
+        return gradient_x * (x - a_x) + gradient_y * (y - a_y) + bias;
+    }
+};
+
 // Rows narrower than this many pixels are walked pixel by pixel: jumping to the first
 // covered pixel costs more than it saves.
 inline constexpr int narrow_span = 8;
@@ -157,18 +173,14 @@ inline bool setup_triangle(const WindowVertex& vertex0, const WindowVertex& vert
     const std::int64_t origin_x = std::int64_t{box.x_begin} * subpixel_scale + half;
     const std::int64_t origin_y = std::int64_t{box.y_begin} * subpixel_scale + half;
     for (int i = 0; i < 3; ++i) {
-        const WindowVertex& a = *p[(i + 1) % 3];  // edge i runs between the other two vertices
-        const WindowVertex& b = *p[(i + 2) % 3];
-        const std::int64_t gradient_x = a.y - b.y;
-        const std::int64_t gradient_y = b.x - a.x;
-        const bool top_left = gradient_x > 0 || (gradient_x == 0 && gradient_y > 0);
-        setup.bias[i] = top_left ? 0 : -1;
-        setup.edge_origin[i] =
-            gradient_x * (origin_x - a.x) + gradient_y * (origin_y - a.y) + setup.bias[i];
-        setup.step_x[i] = gradient_x * subpixel_scale;
-        setup.step_y[i] = gradient_y * subpixel_scale;
+        // Edge i runs between the other two vertices.
+        const detail::EdgeFunction edge(*p[(i + 1) % 3], *p[(i + 2) % 3]);
+        setup.bias[i] = edge.bias;
+        setup.edge_origin[i] = edge.at(origin_x, origin_y);
+        setup.step_x[i] = edge.gradient_x * subpixel_scale;
+        setup.step_y[i] = edge.gradient_y * subpixel_scale;
         setup.inverse_step_x[i] =
-            gradient_x > 0 && !narrow ? 1.0 / static_cast<double>(setup.step_x[i]) : 0.0;
+            edge.gradient_x > 0 && !narrow ? 1.0 / static_cast<double>(setup.step_x[i]) : 0.0;
     }
 
     // What interpolation needs: barycentric normalisation, depth and 1/w per vertex.
@@ -186,13 +198,48 @@ bool setup_triangle(const glm::vec4& clip0, const glm::vec4& clip1, const glm::v
                     int viewport_width, int viewport_height, const PixelRect& scissor,
                     TriangleSetup& setup);
 
-// Whether setup_triangle would draw anything of the triangle with some scissor inside
-// `bounds`: false when it has zero area after snapping or no pixel centre of its bounding
-// box lies inside `bounds`. Cheap: no division.
-inline bool may_cover_pixels(const WindowVertex& vertex0, const WindowVertex& vertex1,
-                             const WindowVertex& vertex2, const PixelRect& bounds) {
-    return detail::doubled_area(vertex0, vertex1, vertex2) != 0 &&
-           !detail::covered_box(vertex0, vertex1, vertex2, bounds).empty();
+// The rows of the pixel centres inside `bounds` that the snapped triangle covers, exactly
+// as setup_triangle and the pixel loop decide it, for a triangle whose box holds at most
+// 2×2 of them: a sheet seen whole can have about as many triangles as pixels, and many of
+// them fall between pixel centres and cover none. Empty (first > last) when it covers none,
+// has zero area once snapped, or its box holds no pixel centre of `bounds`. A larger
+// triangle is not examined: the rows of its box.
+struct CoveredRows {
+    int first = 0, last = -1;  // inclusive
+    bool empty() const { return first > last; }
+};
+inline CoveredRows covered_rows(const WindowVertex& vertex0, const WindowVertex& vertex1,
+                                const WindowVertex& vertex2, const PixelRect& bounds) {
+    const std::int64_t area = detail::doubled_area(vertex0, vertex1, vertex2);
+    if (area == 0) return {};
+    const PixelRect box = detail::covered_box(vertex0, vertex1, vertex2, bounds);
+    if (box.empty()) return {};
+    if (box.width() > 2 || box.height() > 2) return {box.y_begin, box.y_end - 1};
+    const WindowVertex* p[3] = {&vertex0, &vertex1, &vertex2};
+    if (area < 0) std::swap(p[1], p[2]);  // as setup_triangle orders a front face
+    // The biased edge functions at the box's four centres (the first, right of it, below
+    // it, and diagonal), ORed: a centre is covered when its value is non-negative. All
+    // four are computed whatever the box's size, so that no branch depends on the
+    // triangle's shape, and the ones outside the box are then ignored.
+    const std::int64_t half = subpixel_scale / 2;
+    const std::int64_t origin_x = std::int64_t{box.x_begin} * subpixel_scale + half;
+    const std::int64_t origin_y = std::int64_t{box.y_begin} * subpixel_scale + half;
+    std::int64_t first_centre = 0, right = 0, below = 0, diagonal = 0;
+    for (int i = 0; i < 3; ++i) {
+        const detail::EdgeFunction edge(*p[(i + 1) % 3], *p[(i + 2) % 3]);
+        const std::int64_t value = edge.at(origin_x, origin_y);
+        const std::int64_t step_x = edge.gradient_x * subpixel_scale;
+        const std::int64_t step_y = edge.gradient_y * subpixel_scale;
+        first_centre |= value;
+        right |= value + step_x;
+        below |= value + step_y;
+        diagonal |= value + step_x + step_y;
+    }
+    const bool wide = box.width() == 2, tall = box.height() == 2;
+    const bool top_row = (first_centre >= 0) | (wide & (right >= 0));
+    const bool bottom_row = tall & ((below >= 0) | (wide & (diagonal >= 0)));
+    if (!top_row && !bottom_row) return {};
+    return {top_row ? box.y_begin : box.y_begin + 1, bottom_row ? box.y_begin + 1 : box.y_begin};
 }
 
 }  // namespace weft::raster

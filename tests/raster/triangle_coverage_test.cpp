@@ -153,6 +153,78 @@ TEST(TriangleRasterizer, SharedEdgePixelsDrawnExactlyOnceForRandomQuads) {
     EXPECT_GT(quads, 1500);
 }
 
+// Triangles a few pixels across, as a fine cloth seen whole is made of: their boxes hold at
+// most 2×2 pixel centres, which the rasterizer and the binning decide without its general
+// pixel loop. The pixel-centre rule still decides coverage, and the rows binning reports are
+// exactly the rows of the pixels drawn, or none when none is.
+TEST(TriangleRasterizer, TinyTrianglesCoverTheirCentresAndBinIntoTheRowsTheyDraw) {
+    Framebuffer fb(8, 8);
+    std::mt19937 rng(20261127);
+    int quads = 0, triangles_drawing_nothing = 0, triangles_drawing = 0;
+    for (int trial = 0; trial < 4000 && !HasFailure(); ++trial) {
+        std::vector<LatticePoint> quad = random_quad(rng, trial % 5, 3);
+        // Inside the framebuffer, or across its right or bottom edge, where the pixels
+        // beyond it are not drawn and binning must not count their rows.
+        const std::int64_t shift_x = trial % 3 == 1 ? 6 : 2, shift_y = trial % 3 == 2 ? 6 : 2;
+        for (LatticePoint& corner : quad) {
+            corner.x += shift_x * 256;
+            corner.y += shift_y * 256;
+        }
+        if (!strictly_convex(quad)) continue;
+        if (trial % 2 == 1) std::reverse(quad.begin(), quad.end());
+        ++quads;
+        CoverageCounter both(fb);
+        for (int half = 0; half < 2; ++half) {
+            const LatticePoint& a = quad[0];
+            const LatticePoint& b = quad[half + 1];
+            const LatticePoint& c = quad[half + 2];
+            draw_window_triangle(fb, both, a, b, c);
+            CoverageCounter alone(fb);
+            draw_window_triangle(fb, alone, a, b, c);
+            int first = fb.height(), last = -1;
+            for (int y = 0; y < fb.height(); ++y) {
+                for (int x = 0; x < fb.width(); ++x) {
+                    if (alone.at(x, y) == 0) continue;
+                    first = std::min(first, y);
+                    last = std::max(last, y);
+                }
+            }
+            auto window = [&](const LatticePoint& p) {
+                return raster::window_vertex(testing::window_vertex(fb, p.fx(), p.fy()).position,
+                                             fb.width(), fb.height());
+            };
+            const CoveredRows rows = covered_rows(window(a), window(b), window(c), fb.bounds());
+            // How many pixel centres the triangle's extent spans along x and along y (its
+            // corners lie at positive coordinates): binning decides exactly up to 2×2, and
+            // gives a larger triangle its box's rows.
+            auto centres = [](std::int64_t low, std::int64_t high) {
+                return (high - 128) / 256 - (low - 128 + 255) / 256 + 1;
+            };
+            const bool tiny = centres(std::min({a.x, b.x, c.x}), std::max({a.x, b.x, c.x})) <= 2 &&
+                              centres(std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y})) <= 2;
+            if (last < 0) {
+                ++triangles_drawing_nothing;
+                if (tiny) {
+                    EXPECT_TRUE(rows.empty()) << "trial " << trial;
+                }
+            } else {
+                ++triangles_drawing;
+                EXPECT_LE(rows.first, first) << "trial " << trial;
+                EXPECT_GE(rows.last, last) << "trial " << trial;
+                if (tiny) {
+                    EXPECT_EQ(rows.first, first) << "trial " << trial;
+                    EXPECT_EQ(rows.last, last) << "trial " << trial;
+                }
+            }
+        }
+        check_polygon_coverage(fb, both, quad, "small quad");
+    }
+    EXPECT_GT(quads, 3000);
+    // Both cases are exercised, many times over.
+    EXPECT_GT(triangles_drawing_nothing, 500);
+    EXPECT_GT(triangles_drawing, 500);
+}
+
 TEST(TriangleRasterizer, FanAroundSharedVertexCoversEveryPixelOnce) {
     Framebuffer fb(64, 64);
     std::mt19937 rng(7);

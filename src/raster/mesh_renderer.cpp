@@ -241,7 +241,7 @@ void bin_triangle_run(const PreparedMesh& prepared, std::size_t begin, std::size
     const PixelRect viewport{0, 0, prepared.width, prepared.height};
     std::vector<std::uint32_t>* lists = bands.lists.data() + slice * bands.band_count;
     // The band of a pixel row: a shift when bands are a power of two rows high (the
-    // frame's are), since a division per triangle took a sixth of binning.
+    // frame's are), as a division per triangle would be a large part of binning.
     const int band_shift = std::has_single_bit(static_cast<unsigned>(bands.band_height))
                                ? std::countr_zero(static_cast<unsigned>(bands.band_height))
                                : -1;

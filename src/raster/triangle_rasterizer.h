@@ -267,9 +267,6 @@ void traverse_pixels(Framebuffer& framebuffer, const RasterState& state, const T
     }
 }
 
-// Boxes at most this many pixel centres wide and high take traverse_tiny.
-inline constexpr int tiny_box_side = 2;
-
 // Stages 4–6 for a set-up triangle whose box holds at most 2×2 pixel centres: a cloth seen
 // whole can have about as many triangles as pixels, and nearly all of them are this small.
 // Coverage of the (up to) four centres is decided first, without a branch per centre, from

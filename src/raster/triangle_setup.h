@@ -198,6 +198,10 @@ bool setup_triangle(const glm::vec4& clip0, const glm::vec4& clip1, const glm::v
                     int viewport_width, int viewport_height, const PixelRect& scissor,
                     TriangleSetup& setup);
 
+// Boxes at most this many pixel centres wide and high are tiny: covered_rows decides their
+// coverage exactly, and the rasterizer shades them without its row walk (traverse_tiny).
+inline constexpr int tiny_box_side = 2;
+
 // The rows of the pixel centres inside `bounds` that the snapped triangle covers, exactly
 // as setup_triangle and the pixel loop decide it, for a triangle whose box holds at most
 // 2×2 of them: a sheet seen whole can have about as many triangles as pixels, and many of
@@ -214,7 +218,8 @@ inline CoveredRows covered_rows(const WindowVertex& vertex0, const WindowVertex&
     if (area == 0) return {};
     const PixelRect box = detail::covered_box(vertex0, vertex1, vertex2, bounds);
     if (box.empty()) return {};
-    if (box.width() > 2 || box.height() > 2) return {box.y_begin, box.y_end - 1};
+    if (box.width() > tiny_box_side || box.height() > tiny_box_side)
+        return {box.y_begin, box.y_end - 1};
     const WindowVertex* p[3] = {&vertex0, &vertex1, &vertex2};
     if (area < 0) std::swap(p[1], p[2]);  // as setup_triangle orders a front face
     // The biased edge functions at the box's four centres (the first, right of it, below
@@ -235,6 +240,7 @@ inline CoveredRows covered_rows(const WindowVertex& vertex0, const WindowVertex&
         below |= value + step_y;
         diagonal |= value + step_x + step_y;
     }
+    static_assert(tiny_box_side == 2, "four centres: the first, right, below, diagonal");
     const bool wide = box.width() == 2, tall = box.height() == 2;
     const bool top_row = (first_centre >= 0) | (wide & (right >= 0));
     const bool bottom_row = tall & ((below >= 0) | (wide & (diagonal >= 0)));

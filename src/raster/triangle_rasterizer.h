@@ -134,12 +134,13 @@ void traverse_blocks(Framebuffer& framebuffer, const RasterState& state, const T
 // whichever of them takes a triangle, its fragments are the same to the bit. Everything it
 // reads is copied in once per triangle: colour stores go through unsigned char, which may
 // alias anything, so values read through a reference would be reloaded after every pixel
-// written.
+// written. The varyings too, with CopyVaryings, for the row walk; a tiny triangle shades a
+// pixel or two, fewer reads than the copy, and reads them where they are.
 //
 // The varyings come as each setup vertex's varyings divided by its w: a/w and 1/w are affine
 // in screen space, so their barycentric blend divided by the blended 1/w is the
 // perspective-correct value (the same trick GPUs use).
-template <class Shader>
+template <class Shader, bool CopyVaryings = true>
 struct PixelShading {
     Rgba8* colours;
     float* depths;
@@ -150,7 +151,8 @@ struct PixelShading {
     float inverse_area;
     float depth0, depth1, depth2;
     float inverse_w0, inverse_w1, inverse_w2;
-    std::array<std::array<float, max_varyings>, 3> varying_over_w;
+    std::array<std::array<float, max_varyings>, 3> varying_over_w;  // with CopyVaryings
+    const float* given[3];                                          // without
     std::array<float, max_varyings> varyings;  // the first varying_count are set per pixel
     Fragment fragment;
 
@@ -171,9 +173,12 @@ struct PixelShading {
           depth2(setup.depth[2]),
           inverse_w0(setup.inverse_w[0]),
           inverse_w1(setup.inverse_w[1]),
-          inverse_w2(setup.inverse_w[2]) {
-        for (int i = 0; i < 3; ++i)
-            for (int k = 0; k < varying_count; ++k) varying_over_w[i][k] = given_over_w[i][k];
+          inverse_w2(setup.inverse_w[2]),
+          given{given_over_w[0], given_over_w[1], given_over_w[2]} {
+        if constexpr (CopyVaryings) {
+            for (int i = 0; i < 3; ++i)
+                for (int k = 0; k < varying_count; ++k) varying_over_w[i][k] = given_over_w[i][k];
+        }
         fragment.front_facing = setup.front_facing;
         fragment.varyings = varyings.data();
     }
@@ -194,9 +199,13 @@ struct PixelShading {
         if (varying_count > 0) {
             const float w = 1.0f / (b0 * inverse_w0 + b1 * inverse_w1 + b2 * inverse_w2);
             for (int k = 0; k < varying_count; ++k) {
-                varyings[k] = (b0 * varying_over_w[0][k] + b1 * varying_over_w[1][k] +
-                               b2 * varying_over_w[2][k]) *
-                              w;
+                if constexpr (CopyVaryings) {
+                    varyings[k] = (b0 * varying_over_w[0][k] + b1 * varying_over_w[1][k] +
+                                   b2 * varying_over_w[2][k]) *
+                                  w;
+                } else {
+                    varyings[k] = (b0 * given[0][k] + b1 * given[1][k] + b2 * given[2][k]) * w;
+                }
             }
         }
         fragment.x = x;
@@ -294,7 +303,7 @@ void traverse_tiny(Framebuffer& framebuffer, const RasterState& state, const Tri
         covered |= static_cast<unsigned>(any_outside[k] >= 0) << k;
     covered &= in_box;
     if (covered == 0) return;
-    PixelShading<Shader> pixels(framebuffer, state, setup, varying_over_w);
+    PixelShading<Shader, false> pixels(framebuffer, state, setup, varying_over_w);
     for (; covered != 0; covered &= covered - 1) {
         const int k = std::countr_zero(covered);
         pixels.shade(setup.x_begin + k % tiny_box_side, setup.y_begin + k / tiny_box_side,

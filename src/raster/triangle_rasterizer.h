@@ -284,30 +284,16 @@ void traverse_pixels(Framebuffer& framebuffer, const RasterState& state, const T
 template <class Shader>
 void traverse_tiny(Framebuffer& framebuffer, const RasterState& state, const TriangleSetup& setup,
                    const float* const (&varying_over_w)[3], Shader& shader) {
-    // All four centres are evaluated whatever the box's size, so that no branch depends
-    // on the triangle's shape; those outside the box are masked out.
-    std::int64_t edges[tiny_box_side * tiny_box_side][3];
-    std::int64_t any_outside[tiny_box_side * tiny_box_side] = {0, 0, 0, 0};
-    for (int i = 0; i < 3; ++i) {
-        edges[0][i] = setup.edge_origin[i];
-        edges[1][i] = setup.edge_origin[i] + setup.step_x[i];
-        edges[2][i] = setup.edge_origin[i] + setup.step_y[i];
-        edges[3][i] = setup.edge_origin[i] + setup.step_x[i] + setup.step_y[i];
-        for (int k = 0; k < tiny_box_side * tiny_box_side; ++k) any_outside[k] |= edges[k][i];
-    }
-    const unsigned in_box = setup.x_end - setup.x_begin == 2
-                                ? (setup.y_end - setup.y_begin == 2 ? 0b1111u : 0b0011u)
-                                : (setup.y_end - setup.y_begin == 2 ? 0b0101u : 0b0001u);
-    unsigned covered = 0;  // bit (row · 2 + column) for each covered centre
-    for (int k = 0; k < tiny_box_side * tiny_box_side; ++k)
-        covered |= static_cast<unsigned>(any_outside[k] >= 0) << k;
-    covered &= in_box;
+    const detail::TinyCoverage coverage =
+        detail::tiny_coverage(setup.edge_origin, setup.step_x, setup.step_y,
+                              setup.x_end - setup.x_begin, setup.y_end - setup.y_begin);
+    unsigned covered = coverage.covered;
     if (covered == 0) return;
     PixelShading<Shader, false> pixels(framebuffer, state, setup, varying_over_w);
     for (; covered != 0; covered &= covered - 1) {
         const int k = std::countr_zero(covered);
         pixels.shade(setup.x_begin + k % tiny_box_side, setup.y_begin + k / tiny_box_side,
-                     edges[k][0], edges[k][1], edges[k][2], shader);
+                     coverage.edges[k][0], coverage.edges[k][1], coverage.edges[k][2], shader);
     }
 }
 

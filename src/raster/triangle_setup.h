@@ -202,6 +202,40 @@ bool setup_triangle(const glm::vec4& clip0, const glm::vec4& clip1, const glm::v
 // coverage exactly, and the rasterizer shades them without its row walk (traverse_tiny).
 inline constexpr int tiny_box_side = 2;
 
+namespace detail {
+
+// A tiny box's four pixel centres — its first, the one right of it, the one below, the
+// diagonal — as bit (row · 2 + column): the biased values of the three edge functions at
+// each, and which of them lie inside the box (columns × rows) and are covered. All four are
+// evaluated whatever the box's size, so that no branch depends on the triangle's shape.
+struct TinyCoverage {
+    std::int64_t edges[tiny_box_side * tiny_box_side][3];
+    unsigned covered = 0;
+};
+inline TinyCoverage tiny_coverage(const std::int64_t (&at_first)[3],
+                                  const std::int64_t (&step_x)[3], const std::int64_t (&step_y)[3],
+                                  int columns, int rows) {
+    static_assert(tiny_box_side == 2, "four centres: the first, right, below, diagonal");
+    TinyCoverage coverage;
+    std::int64_t any_outside[tiny_box_side * tiny_box_side] = {0, 0, 0, 0};
+    for (int i = 0; i < 3; ++i) {
+        coverage.edges[0][i] = at_first[i];
+        coverage.edges[1][i] = at_first[i] + step_x[i];
+        coverage.edges[2][i] = at_first[i] + step_y[i];
+        coverage.edges[3][i] = at_first[i] + step_x[i] + step_y[i];
+        for (int k = 0; k < tiny_box_side * tiny_box_side; ++k)
+            any_outside[k] |= coverage.edges[k][i];
+    }
+    const unsigned in_box =
+        columns == 2 ? (rows == 2 ? 0b1111u : 0b0011u) : (rows == 2 ? 0b0101u : 0b0001u);
+    for (int k = 0; k < tiny_box_side * tiny_box_side; ++k)
+        coverage.covered |= static_cast<unsigned>(any_outside[k] >= 0) << k;
+    coverage.covered &= in_box;
+    return coverage;
+}
+
+}  // namespace detail
+
 // The rows of the pixel centres inside `bounds` that the snapped triangle covers, exactly
 // as setup_triangle and the pixel loop decide it, for a triangle whose box holds at most
 // 2×2 of them: a sheet seen whole can have about as many triangles as pixels, and many of
@@ -222,29 +256,20 @@ inline CoveredRows covered_rows(const WindowVertex& vertex0, const WindowVertex&
         return {box.y_begin, box.y_end - 1};
     const WindowVertex* p[3] = {&vertex0, &vertex1, &vertex2};
     if (area < 0) std::swap(p[1], p[2]);  // as setup_triangle orders a front face
-    // The biased edge functions at the box's four centres (the first, right of it, below
-    // it, and diagonal), ORed: a centre is covered when its value is non-negative. All
-    // four are computed whatever the box's size, so that no branch depends on the
-    // triangle's shape, and the ones outside the box are then ignored.
     const std::int64_t half = subpixel_scale / 2;
     const std::int64_t origin_x = std::int64_t{box.x_begin} * subpixel_scale + half;
     const std::int64_t origin_y = std::int64_t{box.y_begin} * subpixel_scale + half;
-    std::int64_t first_centre = 0, right = 0, below = 0, diagonal = 0;
-    for (int i = 0; i < 3; ++i) {
+    std::int64_t at_first[3], step_x[3], step_y[3];
+    for (int i = 0; i < 3; ++i) {  // as setup_triangle makes them
         const detail::EdgeFunction edge(*p[(i + 1) % 3], *p[(i + 2) % 3]);
-        const std::int64_t value = edge.at(origin_x, origin_y);
-        const std::int64_t step_x = edge.gradient_x * subpixel_scale;
-        const std::int64_t step_y = edge.gradient_y * subpixel_scale;
-        first_centre |= value;
-        right |= value + step_x;
-        below |= value + step_y;
-        diagonal |= value + step_x + step_y;
+        at_first[i] = edge.at(origin_x, origin_y);
+        step_x[i] = edge.gradient_x * subpixel_scale;
+        step_y[i] = edge.gradient_y * subpixel_scale;
     }
-    static_assert(tiny_box_side == 2, "four centres: the first, right, below, diagonal");
-    const bool wide = box.width() == 2, tall = box.height() == 2;
-    const bool top_row = (first_centre >= 0) | (wide & (right >= 0));
-    const bool bottom_row = tall & ((below >= 0) | (wide & (diagonal >= 0)));
-    if (!top_row && !bottom_row) return {};
+    const unsigned covered =
+        detail::tiny_coverage(at_first, step_x, step_y, box.width(), box.height()).covered;
+    if (covered == 0) return {};
+    const bool top_row = (covered & 0b0011u) != 0, bottom_row = (covered & 0b1100u) != 0;
     return {top_row ? box.y_begin : box.y_begin + 1, bottom_row ? box.y_begin + 1 : box.y_begin};
 }
 

@@ -35,7 +35,7 @@ TEST(GoldenState, EachIntegratorEndsTheDefaultSheetsRunInItsPinnedState) {
         {"verlet", "0.00025", 0x0002293ff85b63b7ull},
         {"velocity-verlet", "0.00025", 0x6b5c65f84f26bda6ull},
         {"rk4", "0.0005", 0x0e6f16082e3cd9feull},
-        {"implicit-euler", "0.004", 0xbe19870c6c7978f6ull},
+        {"implicit-euler", "0.004", 0xd86b0e8986f4ebddull},
     };
     for (const Golden& golden : goldens) {
         const SceneLoadResult loaded =

@@ -134,6 +134,13 @@ void update_rows_baseline(const Job& job, int begin, int end, float alpha, RowSu
 void update_rows_avx2(const Job& job, int begin, int end, float alpha, RowSums sums);
 void update_rows_avx512(const Job& job, int begin, int end, float alpha, RowSums sums);
 
+// After the iterations: one damped block-Jacobi step on the residual they left,
+// v1 += ω P_J r (P_J: the block-Jacobi part of the preconditioner, zero at fixed particles).
+// Writes z = P_J r on the way; r is left as it was.
+void smooth_rows_baseline(const Job& job, int begin, int end, float omega);
+void smooth_rows_avx2(const Job& job, int begin, int end, float omega);
+void smooth_rows_avx512(const Job& job, int begin, int end, float omega);
+
 // After the solve, with contacts and `direction` = v1 - v_k: applied = A (v1 - v_k) without
 // the contact filter, so that A (v1 - v_k) - g = A v1 - b at a held particle is the impulse
 // its surface gave it (g unfiltered).

@@ -542,6 +542,16 @@ void direction_rows(const Job& job, int begin, int end, float beta, RowSums sums
     }
 }
 
+void smooth_rows(const Job& job, int begin, int end, float omega) {
+    for (int row = begin; row < end; ++row) {
+        const std::size_t base = at(job, row);
+        precondition_row(job, row);
+        add_scaled_in_place(job.solution.x + base, omega, job.preconditioned.x + base, job.cols);
+        add_scaled_in_place(job.solution.y + base, omega, job.preconditioned.y + base, job.cols);
+        add_scaled_in_place(job.solution.z + base, omega, job.preconditioned.z + base, job.cols);
+    }
+}
+
 void unfiltered_product_rows(const Job& job, int begin, int end) {
     BandProduct plain(job, job.direction, begin, band_scratch(job.cols, 1), false);
     for (int row = begin; row < end; ++row) plain.row(row, job.applied);

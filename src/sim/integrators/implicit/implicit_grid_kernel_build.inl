@@ -39,6 +39,11 @@ void WEFT_KERNEL_NAME(update_rows, WEFT_KERNEL_SUFFIX)(const Job& job, int begin
     update_rows(job, begin, end, alpha, sums);
 }
 
+void WEFT_KERNEL_NAME(smooth_rows, WEFT_KERNEL_SUFFIX)(const Job& job, int begin, int end,
+                                                       float omega) {
+    smooth_rows(job, begin, end, omega);
+}
+
 void WEFT_KERNEL_NAME(unfiltered_product_rows, WEFT_KERNEL_SUFFIX)(const Job& job, int begin,
                                                                    int end) {
     unfiltered_product_rows(job, begin, end);

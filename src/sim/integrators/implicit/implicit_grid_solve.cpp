@@ -239,6 +239,9 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     const auto update =
         kernel_of(level, implicit_kernel::update_rows_baseline, implicit_kernel::update_rows_avx2,
                   implicit_kernel::update_rows_avx512);
+    const auto smooth =
+        kernel_of(level, implicit_kernel::smooth_rows_baseline, implicit_kernel::smooth_rows_avx2,
+                  implicit_kernel::smooth_rows_avx512);
     const bool multilevel = settings.multilevel;
     // The local bound (ImplicitSolveSettings): the largest velocity error a particle may
     // keep, by the block-Jacobi estimate. Not for a fixed tolerance, which studies ask for
@@ -297,6 +300,11 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
             beta = r_z > 0.0 ? next_r_z / r_z : 0.0;
             r_z = next_r_z;
             ++iteration;
+        }
+        // The damped block-Jacobi step after the iterations (ImplicitSolveSettings).
+        if (settings.post_smoothing > 0.0) {
+            const auto omega = static_cast<float>(settings.post_smoothing);
+            over_rows(solver, pool, [&](int begin, int end) { smooth(job, begin, end, omega); });
         }
         clock.lap(phases.iterations);
     };

@@ -275,5 +275,72 @@ TEST(ImplicitGridSolve, AFallAtAFrameStepEndsAsStretchedAsTheConvergedFall) {
     for (const char* mass : masses) EXPECT_LT(fall(mass, 0.0), converged_stretch + 0.003) << mass;
 }
 
+// The early judgement (ImplicitSolveSettings::early_judgement) looks at the step the solve so
+// far would take and puts everything back: a try it keeps must end in the bits of the same
+// solve judged only at its end, and a try it rejects stops there. A sheet in its fall, one
+// step solved three ways from the same state with a judge that records what it saw.
+TEST(ImplicitGridSolve, AnEarlyJudgementThatKeepsATryLeavesItsSolveUntouched) {
+    const Scene scene = cloth_material_sheet(32, 1.0 / 60.0);
+    Simulation falling(scene);
+    ASSERT_TRUE(testing::run_steps(falling, 6));
+    const Cloth start = falling.cloth();
+    const ForceField field = falling.force_field();
+    const double dt = scene.solver.dt;
+    const ImplicitSolveSettings settings;
+
+    struct Judge {
+        bool verdict = true;
+        const Cloth* cloth = nullptr;  // the one being stepped
+        const Cloth* from = nullptr;   // its state at the step's start
+        mutable int calls = 0;
+        mutable double largest_move = 0.0;  // m, of the positions shown, from the start
+    };
+    struct Solved {
+        Cloth cloth;
+        int iterations = 0;
+        bool rejected_early = false;
+    };
+    auto solve = [&](Judge* judge) {
+        Solved solved{start};
+        ImplicitGridSolver solver;
+        std::vector<Vec3> linearised(start.particle_count());
+        ImplicitLinearisation at{{}, linearised};
+        if (judge) {
+            judge->cloth = &solved.cloth;
+            judge->from = &start;
+            at.judge = [](const void* context) {
+                const Judge& j = *static_cast<const Judge*>(context);
+                ++j.calls;
+                for (std::size_t p = 0; p < j.cloth->particle_count(); ++p)
+                    j.largest_move = std::max(
+                        j.largest_move, glm::length(j.cloth->positions[p] - j.from->positions[p]));
+                return j.verdict;
+            };
+            at.judge_context = judge;
+        }
+        EXPECT_TRUE(step_implicit_euler_grid(solved.cloth, field, dt, settings, solver, nullptr,
+                                             supported_simd_level(), at, nullptr));
+        solved.iterations = solver.last_iterations;
+        solved.rejected_early = solver.last_rejected_early;
+        return solved;
+    };
+
+    const Solved unjudged = solve(nullptr);
+    Judge keeps;
+    const Solved kept = solve(&keeps);
+    EXPECT_EQ(keeps.calls, 1);
+    EXPECT_GT(keeps.largest_move, 1e-3);  // m: it was shown the step, not the start
+    EXPECT_FALSE(kept.rejected_early);
+    EXPECT_EQ(kept.iterations, unjudged.iterations);
+    EXPECT_EQ(hash_state(kept.cloth), hash_state(unjudged.cloth));
+
+    Judge rejects;
+    rejects.verdict = false;
+    const Solved rejected = solve(&rejects);
+    EXPECT_EQ(rejects.calls, 1);
+    EXPECT_TRUE(rejected.rejected_early);
+    EXPECT_LT(rejected.iterations, unjudged.iterations);
+}
+
 }  // namespace
 }  // namespace weft

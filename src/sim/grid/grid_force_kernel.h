@@ -93,6 +93,19 @@ StretchHeadroom rows_stretch_headroom_avx2(const Job& job, double ratio, double 
 StretchHeadroom rows_stretch_headroom_avx512(const Job& job, double ratio, double ratio_squared,
                                              int row_begin, int row_end);
 
+// The largest error of a linearised step (implicit_euler.cpp) over the live springs starting
+// on rows [row_begin, row_end) that end it longer than `ratio` rest lengths, in rest lengths:
+// how far each one's force at the end, k (|d1| - L) d1 / |d1| with d1 from job.positions, is
+// from what the step assumed when linearised at `start` (x y z per particle), over k L; 0
+// without such a spring. Each spring's error in the general pass's operations (the same
+// double), found by a vectorised test of |d1|² against ratio_squared L², a superset.
+double rows_linearisation_error_baseline(const Job& job, const double* start, double ratio,
+                                         double ratio_squared, int row_begin, int row_end);
+double rows_linearisation_error_avx2(const Job& job, const double* start, double ratio,
+                                     double ratio_squared, int row_begin, int row_end);
+double rows_linearisation_error_avx512(const Job& job, const double* start, double ratio,
+                                       double ratio_squared, int row_begin, int row_end);
+
 // The divergence guard's particle sweep over interleaved arrays (x y z per particle):
 // whether a position or velocity is not finite, and whether some particle may have moved
 // from its reference by |x - x_ref|² >= limit_squared: every such particle is flagged, and

@@ -328,6 +328,65 @@ StretchHeadroom rows_stretch_headroom(const Job& job, double ratio, double ratio
     return {suspect != 0, headroom, scale};
 }
 
+// One spring's error of linearisation in rest lengths, or 0 if it does not end the step
+// longer than ratio L (implicit_euler.cpp's largest_linearisation_error, operation for
+// operation: glm's dot sums x, then y, then z). d0, d1: the spring at the linearisation
+// point and at the end.
+double spring_linearisation_error(const double (&d0)[3], const double (&d1)[3], double rest,
+                                  double ratio) {
+    const double l0 = std::sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]);
+    const double l1 = std::sqrt(d1[0] * d1[0] + d1[1] * d1[1] + d1[2] * d1[2]);
+    if (!(l0 > 0.0) || !(l1 > ratio * rest)) return 0.0;
+    double u[3], change[3];
+    for (int k = 0; k < 3; ++k) {
+        u[k] = d0[k] / l0;
+        change[k] = d1[k] - d0[k];
+    }
+    const double along = u[0] * change[0] + u[1] * change[1] + u[2] * change[2];
+    const double transverse = std::max(0.0, 1.0 - rest / l0);
+    const double scale = (l1 - rest) / l1;
+    double miss[3];
+    for (int k = 0; k < 3; ++k) {
+        const double assumed =
+            (l0 - rest) * u[k] + along * u[k] + transverse * (change[k] - along * u[k]);
+        miss[k] = scale * d1[k] - assumed;
+    }
+    return std::sqrt(miss[0] * miss[0] + miss[1] * miss[1] + miss[2] * miss[2]) / rest;
+}
+
+double rows_linearisation_error(const Job& job, const double* start, double ratio,
+                                double ratio_squared, int row_begin, int row_end) {
+    double largest = 0.0;
+    over_spring_rows(
+        job, row_begin, row_end,
+        [&](const double* __restrict a, const double* __restrict b, const double* __restrict rest,
+            std::size_t c_begin, std::size_t c_end) {
+            // Almost every row of a sheet has no spring that long: a pass without a branch
+            // tells, and only a row that may have one is looked at spring by spring.
+            unsigned suspect = 0;
+            for (std::size_t c = c_begin; c < c_end; ++c) {
+                const double dx = b[3 * c] - a[3 * c], dy = b[3 * c + 1] - a[3 * c + 1],
+                             dz = b[3 * c + 2] - a[3 * c + 2];
+                const double live = rest[c] >= 0.0 ? 1.0 : 0.0;
+                suspect |= live * (dx * dx + dy * dy + dz * dz) > ratio_squared * rest[c] * rest[c]
+                               ? 1u
+                               : 0u;
+            }
+            if (suspect == 0) return;
+            const double* a0 = start + (a - job.positions);
+            const double* b0 = start + (b - job.positions);
+            for (std::size_t c = c_begin; c < c_end; ++c) {
+                if (!(rest[c] >= 0.0)) continue;
+                const double d0[3] = {b0[3 * c] - a0[3 * c], b0[3 * c + 1] - a0[3 * c + 1],
+                                      b0[3 * c + 2] - a0[3 * c + 2]};
+                const double d1[3] = {b[3 * c] - a[3 * c], b[3 * c + 1] - a[3 * c + 1],
+                                      b[3 * c + 2] - a[3 * c + 2]};
+                largest = std::max(largest, spring_linearisation_error(d0, d1, rest[c], ratio));
+            }
+        });
+    return largest;
+}
+
 // The divergence guard's sweep over particles (divergence.cpp): flags a non-finite position
 // or velocity, and whether some particle has moved from its reference position by
 // |x - x_ref|² >= limit_squared. Branch-free, so it vectorises.

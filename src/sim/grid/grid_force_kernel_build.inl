@@ -35,6 +35,12 @@ StretchHeadroom WEFT_KERNEL_NAME(rows_stretch_headroom,
     return rows_stretch_headroom(job, ratio, ratio_squared, row_begin, row_end);
 }
 
+double WEFT_KERNEL_NAME(rows_linearisation_error,
+                        WEFT_KERNEL_SUFFIX)(const Job& job, const double* start, double ratio,
+                                            double ratio_squared, int row_begin, int row_end) {
+    return rows_linearisation_error(job, start, ratio, ratio_squared, row_begin, row_end);
+}
+
 void WEFT_KERNEL_NAME(sweep_particles, WEFT_KERNEL_SUFFIX)(const double* x, const double* reference,
                                                            const double* v, std::size_t count,
                                                            double limit_squared, bool& non_finite,

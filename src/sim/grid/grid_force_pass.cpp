@@ -205,6 +205,28 @@ std::optional<grid_kernel::StretchHeadroom> grid_stretch_headroom(const Cloth& c
     return total;
 }
 
+std::optional<double> grid_linearisation_error(const Cloth& cloth, std::span<const Vec3> start,
+                                               double ratio, WorkerPool* pool, SimdLevel level) {
+    const std::optional<grid_kernel::Job> described = spring_rows_job(cloth);
+    if (!described || start.size() != cloth.particle_count()) return std::nullopt;
+    const grid_kernel::Job& job = *described;
+    const double ratio_squared = maybe_ratio_squared(ratio);
+    const auto kernel = kernel_of(level, grid_kernel::rows_linearisation_error_baseline,
+                                  grid_kernel::rows_linearisation_error_avx2,
+                                  grid_kernel::rows_linearisation_error_avx512);
+    const double* at = &start.data()->x;
+    if (!use_threads(cloth, pool)) return kernel(job, at, ratio, ratio_squared, 0, job.rows);
+    double largest = 0.0;
+    std::mutex merge;
+    pool->parallel_for(static_cast<std::size_t>(job.rows), [&](std::size_t begin, std::size_t end) {
+        const double part =
+            kernel(job, at, ratio, ratio_squared, static_cast<int>(begin), static_cast<int>(end));
+        std::lock_guard lock(merge);
+        largest = std::max(largest, part);
+    });
+    return largest;
+}
+
 ParticleSweep sweep_particles(std::span<const Vec3> positions, std::span<const Vec3> reference,
                               std::span<const Vec3> velocities, double limit_squared,
                               WorkerPool* pool, SimdLevel level) {

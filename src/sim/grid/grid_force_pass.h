@@ -84,6 +84,14 @@ std::optional<grid_kernel::StretchHeadroom> grid_stretch_headroom(const Cloth& c
                                                                   WorkerPool* pool,
                                                                   SimdLevel level);
 
+// implicit_euler.cpp's largest linearisation error over the stencil: the largest over live
+// springs that end longer than `ratio` rest lengths of how far the force at the cloth's
+// positions is from what the step linearised at `start` assumed, in k L (the same number as
+// spring by spring: a maximum is exact in any order); 0 without such a spring. Nothing when
+// there is no usable stencil.
+std::optional<double> grid_linearisation_error(const Cloth& cloth, std::span<const Vec3> start,
+                                               double ratio, WorkerPool* pool, SimdLevel level);
+
 // The guard's sweep on its own, vectorised with the same kernel builds.
 ParticleSweep sweep_particles(std::span<const Vec3> positions, std::span<const Vec3> reference,
                               std::span<const Vec3> velocities, double limit_squared,

@@ -169,6 +169,13 @@ void multiply_implicit_system(const Cloth& cloth, const IntegratorWorkspace& wor
                               double dt, std::span<const Vec3> vector, std::span<Vec3> product,
                               std::span<const std::uint32_t> held = {});
 
+// The largest error of an implicit step's linearisation over the springs that end it
+// longer than `ratio` rest lengths, in rest lengths (implicit_euler.cpp); `start`: the
+// positions the step was linearised at. Spring by spring over the cloth's springs; the
+// stencil's grid_linearisation_error gives the same number.
+double largest_linearisation_error(const Cloth& cloth, std::span<const Vec3> start, double ratio,
+                                   WorkerPool* pool);
+
 // The step function of a method.
 StepFunction step_function(Integrator integrator);
 

@@ -67,22 +67,6 @@ void multiply_implicit_system(const Cloth& cloth, const IntegratorWorkspace& wor
     for (std::uint32_t p : held) product[p] = Vec3(0.0);
 }
 
-namespace {
-
-// One linearised step of dt from the cloth's state, linearised at `at`, by the structured
-// solve where the cloth is a grid, else by the general one below. Returns whether it held
-// particles on solids' surfaces (the structured solve's contacts).
-bool take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
-                          IntegratorWorkspace& work, const ImplicitLinearisation& at);
-
-// Whether some live spring is longer than `ratio` rest lengths: the stencil's vectorised
-// test first, which almost always settles it, then the exact one.
-bool some_spring_longer_than(const Cloth& cloth, double ratio, WorkerPool* pool, SimdLevel level) {
-    const std::optional<bool> maybe = grid_springs_maybe_longer_than(cloth, ratio, pool, level);
-    if (maybe && !*maybe) return false;
-    return largest_stretch_ratio(cloth, pool) > ratio;
-}
-
 // The largest error of the step's linearisation over the springs that end the step longer
 // than `ratio` rest lengths, in rest lengths: for each, how far its force at the end of the
 // step, k (|d1| - L) d1 / |d1|, is from what the step assumed, f(d0) + K(d0) (d1 - d0) (K as
@@ -120,6 +104,14 @@ double largest_linearisation_error(const Cloth& cloth, std::span<const Vec3> sta
             [](double a, double b) { return std::max(a, b); });
     return largest;
 }
+
+namespace {
+
+// One linearised step of dt from the cloth's state, linearised at `at`, by the structured
+// solve where the cloth is a grid, else by the general one below. Returns whether it held
+// particles on solids' surfaces (the structured solve's contacts).
+bool take_linearised_step(Cloth& cloth, const ForceField& field, double dt,
+                          IntegratorWorkspace& work, const ImplicitLinearisation& at);
 
 // The step of dt, or, when its linearisation fails it, the same step linearised again
 // where it ended, or two of dt / 2 (each of which may split again, down to
@@ -171,20 +163,45 @@ int step_or_split(Cloth& cloth, const ForceField& field, double dt, IntegratorWo
         });
     };
     bool held_contacts = false;
+    // Whether the step, ended where the cloth now is, is kept (linearised at the positions
+    // in scratch.implicit_linearised_positions).
+    struct Judgement {
+        const Cloth& cloth;
+        const IntegratorWorkspace& work;
+        // The error is taken over the springs longer than the ratio alone: it is 0 where
+        // none is, and the stencil's pass tells that without a square root on almost
+        // every row.
+        bool kept() const {
+            const ImplicitSolveSettings& rule = work.settings.implicit;
+            const std::span<const Vec3> start = work.scratch.implicit_linearised_positions;
+            WorkerPool* pool = work.settings.pool;
+            const std::optional<double> on_stencil = grid_linearisation_error(
+                cloth, start, rule.split_stretch_ratio, pool, work.settings.options.kernel_build);
+            const double error = on_stencil ? *on_stencil
+                                            : largest_linearisation_error(
+                                                  cloth, start, rule.split_stretch_ratio, pool);
+            return !(error > rule.split_force_error);
+        }
+    };
+    const Judgement judgement{cloth, work};
     auto step_linearised_at = [&](std::span<const Vec3> velocities) {
         clock.lap(work.statistics.implicit_times.split_checks);
         const int iterations_before = work.statistics.implicit_iterations;
-        held_contacts = take_linearised_step(cloth, field, dt, work,
-                                             {velocities, scratch.implicit_linearised_positions});
+        ImplicitLinearisation at{velocities, scratch.implicit_linearised_positions};
+        // Judged early where tries fail: under the hand, and on a Newton iteration, which
+        // follows a try that failed. A calm step is judged at its end only.
+        if (checked && (!field.held.empty() || !velocities.empty())) {
+            at.judge = [](const void* context) {
+                return static_cast<const Judgement*>(context)->kept();
+            };
+            at.judge_context = &judgement;
+        }
+        scratch.implicit_grid.last_rejected_early = false;  // the general solve never is
+        held_contacts = take_linearised_step(cloth, field, dt, work, at);
         work.statistics.implicit_iterations += iterations_before;
         clock.lap(timed_inside);
-        const bool kept =
-            !checked ||
-            !some_spring_longer_than(cloth, settings.split_stretch_ratio, work.settings.pool,
-                                     work.settings.options.kernel_build) ||
-            !(largest_linearisation_error(cloth, scratch.implicit_linearised_positions,
-                                          settings.split_stretch_ratio,
-                                          work.settings.pool) > settings.split_force_error);
+        if (scratch.implicit_grid.last_rejected_early) return false;
+        const bool kept = !checked || judgement.kept();
         clock.lap(work.statistics.implicit_times.split_checks);
         return kept;
     };

@@ -58,6 +58,7 @@ void ImplicitGridSolver::prepare(int grid_rows, int grid_cols) {
     row_sums.assign(4 * static_cast<std::size_t>(rows), 0.0);
     forces.assign(count, Vec3(0.0));
     first_iterate.assign(count, Vec3(0.0));
+    judged_positions.assign(count, Vec3(0.0));
     fixed.assign(count, 0);
     has_previous_change = false;
     contacts.held.clear();  // their particles belonged to the old grid
@@ -86,6 +87,8 @@ ImplicitGridSolver& ImplicitGridSolver::operator=(const ImplicitGridSolver& othe
     has_previous_change = other.has_previous_change;
     last_held_contacts = other.last_held_contacts;
     last_iterations = other.last_iterations;
+    last_rejected_early = other.last_rejected_early;
+    judged_positions.resize(other.judged_positions.size());  // scratch: its size only
     last_relative_residual = other.last_relative_residual;
     if (!storage.empty()) bind();
     return *this;
@@ -145,6 +148,7 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     ImplicitPhaseTimes& phases = times ? *times : unused;
     PhaseClock clock(times != nullptr);
     solver.prepare(cloth.rows, cloth.cols);
+    solver.last_rejected_early = false;
     implicit_kernel::Job& job = solver.job;
     // The state the step is linearised at, x_k = x0 + h v_k (pins stay put), and the forces
     // there, f(x_k, v_k): gravity, the wind, air drag, the springs and their dampers.
@@ -252,6 +256,28 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
     int iteration = 0;
     double r_r = 0.0, scale = 0.0;
 
+    // A particle's velocity at the end of the step: the solution where it is free, the
+    // prescribed velocity where the hand or a pin fixes it.
+    auto end_velocity = [&](std::size_t i) {
+        return job.free[i] != 0.0f ? Vec3(job.solution.x[i], job.solution.y[i], job.solution.z[i])
+                                   : Vec3(job.start.x[i], job.start.y[i], job.start.z[i]);
+    };
+    // The early judgement (ImplicitSolveSettings::early_judgement) of the solve so far: the
+    // cloth is shown where it would end the step, x0 + h v1, and put back. Nothing the
+    // solve holds changes, so a try judged kept goes on exactly as if never stopped.
+    auto judged_kept = [&] {
+        std::vector<Vec3>& ends = solver.judged_positions;
+        over_rows(solver, pool, [&](int begin, int end) {
+            for (std::size_t p = static_cast<std::size_t>(begin) * solver.cols;
+                 p < static_cast<std::size_t>(end) * solver.cols; ++p)
+                ends[p] = cloth.positions[p] + dt * end_velocity(solver.pad + p);
+        });
+        cloth.positions.swap(ends);
+        const bool kept = linearisation.judge(linearisation.judge_context);
+        cloth.positions.swap(ends);
+        return kept;
+    };
+
     // Preconditioned conjugate gradient (block Jacobi plus the coarse levels), in single
     // precision; the scalars and every sum in double; from the guess in job.solution.
     auto solve = [&](bool first_round) {
@@ -280,11 +306,22 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
                              job.product.y, job.product.z})
             std::fill(array, array + solver.stride, 0.0f);
         double beta = 0.0;
-        auto converged = [&] {
-            return std::sqrt(r_r) <= target &&
-                   (!bound_locally || std::sqrt(largest_z) <= largest_velocity_error);
+        auto within = [&](double factor) {
+            return std::sqrt(r_r) <= factor * target &&
+                   (!bound_locally || std::sqrt(largest_z) <= factor * largest_velocity_error);
         };
-        while (!converged() && iteration < settings.max_iterations) {
+        // Judged early only on the first round, without contacts: the contacts' rounds
+        // change the system itself.
+        bool judge_early = first_round && linearisation.judge && !job.has_contacts &&
+                           settings.early_judgement > 1.0;
+        while (!within(1.0) && iteration < settings.max_iterations) {
+            if (judge_early && within(settings.early_judgement)) {
+                judge_early = false;
+                if (!judged_kept()) {
+                    solver.last_rejected_early = true;
+                    break;
+                }
+            }
             const auto beta_f = static_cast<float>(beta);
             over_rows(solver, pool,
                       [&](int begin, int end) { direction(job, begin, end, beta_f, row_sums); });
@@ -346,9 +383,7 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
                 const std::size_t p = static_cast<std::size_t>(row) * solver.cols + c;
                 const std::size_t i = solver.pad + p;
                 const bool is_free = job.free[i] != 0.0f;
-                const Vec3 v1 = is_free
-                                    ? Vec3(job.solution.x[i], job.solution.y[i], job.solution.z[i])
-                                    : Vec3(job.start.x[i], job.start.y[i], job.start.z[i]);
+                const Vec3 v1 = end_velocity(i);
                 const Vec3 v0 = cloth.velocities[p];
                 const float keep = is_free ? 1.0f : 0.0f;
                 job.guess_change.x[i] = keep * (job.solution.x[i] - static_cast<float>(v0.x));

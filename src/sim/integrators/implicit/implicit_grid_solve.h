@@ -75,6 +75,13 @@ struct ImplicitSolveSettings {
     double split_force_error = 0.1;
     int newton_iterations = 3;
     int max_split_depth = 3;
+    // A try the hand or a Newton iteration takes is judged once before its solve is done,
+    // when the solve is within early_judgement times its stopping rule: most tries that fail
+    // already fail there, as the linearisation's error depends on where the step ends, not
+    // on its last digits, and stop at once. A try judged kept solves on from where it was,
+    // the same iterations as without the judgement, and is judged again at the end, so
+    // what is kept is never judged on a loose solve (0: judged only at the end).
+    double early_judgement = 10.0;
 
     double tolerance(double dt) const {
         return fixed_tolerance > 0.0 ? fixed_tolerance
@@ -94,6 +101,7 @@ struct ImplicitGridSolver {
     std::vector<Vec3> first_iterate;  // m/s, v_k of a step with contacts
     std::vector<std::uint8_t> fixed;  // 1 where a pin or the hand fixes a particle
     std::vector<Vec3> zero_velocities;
+    std::vector<Vec3> judged_positions;  // m, where the early judgement sees the step end
     implicit_kernel::Job job;
     ImplicitMultilevel multilevel;
     ImplicitContacts contacts;
@@ -102,6 +110,7 @@ struct ImplicitGridSolver {
     // solids' surfaces.
     bool last_held_contacts = false;
     int last_iterations = 0;
+    bool last_rejected_early = false;  // the early judgement rejected the try
     double last_relative_residual = 0.0;
 
     ImplicitGridSolver() = default;
@@ -122,6 +131,11 @@ struct ImplicitGridSolver {
 struct ImplicitLinearisation {
     std::span<const Vec3> velocities;  // m/s, v_k; empty: the cloth's own (v0)
     std::span<Vec3> positions;         // m, out: x_k, one per particle
+    // The early judgement (ImplicitSolveSettings::early_judgement), when set: called with
+    // the cloth's positions where the solve so far would end the step, true if such a step
+    // would be kept.
+    bool (*judge)(const void* context) = nullptr;
+    const void* judge_context = nullptr;
 };
 
 // x_k = x0 + h v_k into `positions`: the cloth's positions moved by `velocities` over dt,

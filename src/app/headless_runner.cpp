@@ -293,7 +293,8 @@ int run_headless(const CommandLine& command_line) {
             profile.add(report.times, report.held, report.hand_slipped,
                         simulation.force_evaluations() - evaluations_before,
                         simulation.last_linear_solve().iterations, simulation.last_step_splits(),
-                        simulation.last_step_newton_iterations());
+                        simulation.last_step_newton_iterations(),
+                        simulation.last_step_tries_stopped_early());
         if (report.diverged()) {
             print_divergence(simulation, *report.divergence, step + 1, *command_line.steps);
             status = exit_diverged;

@@ -57,12 +57,14 @@ std::string profile_text(const StepProfile& profile, double dt, int threads) {
     if (profile.solver_iterations > 0 || profile.splits > 0) {
         std::snprintf(line, sizeof line,
                       "  implicit solve: %llu iterations (%.3g a step, at most %d), %llu splits "
-                      "(at most %d in a step), %llu Newton iterations\n",
+                      "(at most %d in a step), %llu Newton iterations, %llu tries stopped at "
+                      "the early judgement\n",
                       static_cast<unsigned long long>(profile.solver_iterations),
                       static_cast<double>(profile.solver_iterations) / steps,
                       profile.most_iterations, static_cast<unsigned long long>(profile.splits),
                       profile.most_splits,
-                      static_cast<unsigned long long>(profile.newton_iterations));
+                      static_cast<unsigned long long>(profile.newton_iterations),
+                      static_cast<unsigned long long>(profile.tries_stopped_early));
         text += line;
     }
     return text;

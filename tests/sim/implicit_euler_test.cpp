@@ -249,5 +249,32 @@ TEST(ImplicitEulerSplit, NewtonIterationsTakeThePlaceOfSplits) {
     EXPECT_LT(splits, splits_alone);
 }
 
+// A try judged early (ImplicitSolveSettings::early_judgement) stops only when another try
+// follows it: the last one a step may take (no Newton iteration left, no halving) is kept
+// whatever its judgement, so it must run its whole solve. The same release without halves:
+// with one Newton iteration, that iteration is the last try and never stops early; with two,
+// the first of them does.
+TEST(ImplicitEulerSplit, TheLastTryAStepMayTakeIsNeverStoppedEarly) {
+    auto run = [](int newton_iterations, int& newton, int& stopped_early) {
+        FlatReleaseAtALargeStep release(1.3, newton_iterations);
+        ImplicitSolveSettings settings;
+        settings.newton_iterations = newton_iterations;
+        settings.max_split_depth = 0;
+        release.simulation.set_implicit_solve_settings(settings);
+        newton = stopped_early = 0;
+        for (int step = 0; step < 23; ++step) {
+            ASSERT_FALSE(release.simulation.step().diverged()) << step;
+            newton += release.simulation.last_step_newton_iterations();
+            stopped_early += release.simulation.last_step_tries_stopped_early();
+        }
+    };
+    int newton = 0, stopped_early = 0;
+    run(1, newton, stopped_early);
+    EXPECT_GT(newton, 0);
+    EXPECT_EQ(stopped_early, 0);
+    run(2, newton, stopped_early);
+    EXPECT_GT(stopped_early, 0);
+}
+
 }  // namespace
 }  // namespace weft

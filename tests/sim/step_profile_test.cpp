@@ -18,7 +18,7 @@ namespace {
 struct LiftedSheet {
     Simulation simulation;
     StepProfile profile;
-    std::uint64_t iterations = 0, splits = 0, newton = 0, held = 0;
+    std::uint64_t iterations = 0, splits = 0, newton = 0, stopped_early = 0, held = 0;
     StepProfile at_step_20;  // the profile as it was after 20 steps
     std::uint64_t iterations_after_20 = 0;
     explicit LiftedSheet(bool profiling)
@@ -45,6 +45,7 @@ struct LiftedSheet {
             iterations += static_cast<std::uint64_t>(simulation.last_linear_solve().iterations);
             splits += static_cast<std::uint64_t>(simulation.last_step_splits());
             newton += static_cast<std::uint64_t>(simulation.last_step_newton_iterations());
+            stopped_early += static_cast<std::uint64_t>(simulation.last_step_tries_stopped_early());
             held += report.held ? 1 : 0;
             if (!simulation.profiling()) {
                 EXPECT_EQ(report.times.total(), 0.0) << step;
@@ -52,7 +53,8 @@ struct LiftedSheet {
             profile.add(report.times, report.held, report.hand_slipped,
                         simulation.force_evaluations() - evaluations,
                         simulation.last_linear_solve().iterations, simulation.last_step_splits(),
-                        simulation.last_step_newton_iterations());
+                        simulation.last_step_newton_iterations(),
+                        simulation.last_step_tries_stopped_early());
             if (step == 19) at_step_20 = profile;
             if (step >= 20)
                 iterations_after_20 +=
@@ -75,6 +77,11 @@ TEST(StepProfile, CountsWhatTheStepsDidAndChangesNoBit) {
     EXPECT_EQ(profile.splits, profiled.splits);
     EXPECT_EQ(profile.newton_iterations, profiled.newton);
     EXPECT_GT(profile.splits + profile.newton_iterations, 0u);
+    EXPECT_EQ(profile.tries_stopped_early, profiled.stopped_early);
+    // Under the hand the tries that fail mostly fail at the early judgement; every try
+    // evaluates the forces once, and each step keeps one.
+    EXPECT_GT(profile.tries_stopped_early, 0u);
+    EXPECT_LE(profile.tries_stopped_early, profile.force_evaluations - profile.steps);
     EXPECT_EQ(profile.force_evaluations, profiled.simulation.force_evaluations());
     // Off, no clock is read: nothing is summed. (How long the phases took is the
     // benchmarks' to say, not a test's.)

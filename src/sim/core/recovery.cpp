@@ -16,7 +16,8 @@ bool Recovery::step(Simulation& simulation, double chosen_dt, std::string& messa
         profile.add(report.times, report.held, report.hand_slipped,
                     simulation.force_evaluations() - evaluations_before,
                     simulation.last_linear_solve().iterations, simulation.last_step_splits(),
-                    simulation.last_step_newton_iterations());
+                    simulation.last_step_newton_iterations(),
+                    simulation.last_step_tries_stopped_early());
     if (report.hand_slipped) {
         char text[96];
         std::snprintf(text, sizeof text,

@@ -67,6 +67,9 @@ class Simulation {
     int last_step_newton_iterations() const {
         return workspace_.statistics.implicit_newton_iterations;
     }
+    int last_step_tries_stopped_early() const {
+        return workspace_.statistics.implicit_tries_stopped_early;
+    }
 
     // How the steps compute (simulation_options.h); a kernel build the CPU lacks becomes the
     // best it has.

@@ -80,9 +80,11 @@ struct StepProfile {
     std::uint64_t splits = 0;
     int most_splits = 0;
     std::uint64_t newton_iterations = 0;
+    std::uint64_t tries_stopped_early = 0;  // at the early judgement (implicit_grid_solve.h)
 
     void add(const StepTimes& times, bool held, bool slipped, std::uint64_t force_evaluations_added,
-             int iterations, int step_splits, int step_newton_iterations) {
+             int iterations, int step_splits, int step_newton_iterations,
+             int step_tries_stopped_early) {
         ++steps;
         held_steps += held ? 1 : 0;
         slips += slipped ? 1 : 0;
@@ -93,6 +95,7 @@ struct StepProfile {
         splits += static_cast<std::uint64_t>(step_splits);
         most_splits = step_splits > most_splits ? step_splits : most_splits;
         newton_iterations += static_cast<std::uint64_t>(step_newton_iterations);
+        tries_stopped_early += static_cast<std::uint64_t>(step_tries_stopped_early);
     }
     // What was added since `earlier`, a copy of this profile taken before (the largest
     // counts in one step stay this profile's: since the run began).
@@ -106,6 +109,7 @@ struct StepProfile {
         part.solver_iterations -= earlier.solver_iterations;
         part.splits -= earlier.splits;
         part.newton_iterations -= earlier.newton_iterations;
+        part.tries_stopped_early -= earlier.tries_stopped_early;
         return part;
     }
 };

@@ -82,8 +82,9 @@ struct IntegratorStatistics {
     // profiling, its phases summed over its pieces.
     int implicit_iterations = 0;
     int implicit_splits = 0;
-    int implicit_newton_iterations = 0;  // linearised again where a piece ended
-    bool implicit_hand_let_go = false;   // a held step stopped where its grip slipped
+    int implicit_newton_iterations = 0;    // linearised again where a piece ended
+    int implicit_tries_stopped_early = 0;  // failed at the early judgement (implicit_grid_solve.h)
+    bool implicit_hand_let_go = false;     // a held step stopped where its grip slipped
     double implicit_relative_residual = 0.0;
     ImplicitPhaseTimes implicit_times;
 };

@@ -184,13 +184,15 @@ int step_or_split(Cloth& cloth, const ForceField& field, double dt, IntegratorWo
         }
     };
     const Judgement judgement{cloth, work};
-    auto step_linearised_at = [&](std::span<const Vec3> velocities) {
+    // `last`: a try after which a failure leads to no other try (no Newton iteration left and
+    // no split), so it is kept whatever its judgement, and must not stop early.
+    auto step_linearised_at = [&](std::span<const Vec3> velocities, bool last) {
         clock.lap(work.statistics.implicit_times.split_checks);
         const int iterations_before = work.statistics.implicit_iterations;
         ImplicitLinearisation at{velocities, scratch.implicit_linearised_positions};
         // Judged early where tries fail: under the hand, and on a Newton iteration, which
         // follows a try that failed. A calm step is judged at its end only.
-        if (checked && (!field.held.empty() || !velocities.empty())) {
+        if (checked && !last && (!field.held.empty() || !velocities.empty())) {
             at.judge = [](const void* context) {
                 return static_cast<const Judgement*>(context)->kept();
             };
@@ -200,7 +202,10 @@ int step_or_split(Cloth& cloth, const ForceField& field, double dt, IntegratorWo
         held_contacts = take_linearised_step(cloth, field, dt, work, at);
         work.statistics.implicit_iterations += iterations_before;
         clock.lap(timed_inside);
-        if (scratch.implicit_grid.last_rejected_early) return false;
+        if (scratch.implicit_grid.last_rejected_early) {
+            ++work.statistics.implicit_tries_stopped_early;
+            return false;
+        }
         const bool kept = !checked || judgement.kept();
         clock.lap(work.statistics.implicit_times.split_checks);
         return kept;
@@ -210,7 +215,7 @@ int step_or_split(Cloth& cloth, const ForceField& field, double dt, IntegratorWo
         return field.grip_stretch > 0.0 &&
                largest_grip_stretch(field.grip_springs, cloth.positions) > field.grip_stretch;
     };
-    bool kept = step_linearised_at({});
+    bool kept = step_linearised_at({}, !may_split && settings.newton_iterations == 0);
     // Not where the step held particles on solids: each solve settles which of them the
     // surface lets go in one round (implicit_contacts.h), so a sheet pulled off the ground
     // needs the halves' rounds.
@@ -220,7 +225,8 @@ int step_or_split(Cloth& cloth, const ForceField& field, double dt, IntegratorWo
         std::copy(cloth.velocities.begin(), cloth.velocities.end(),
                   scratch.implicit_linearised_velocities.begin());
         go_back_to_start();
-        kept = step_linearised_at(scratch.implicit_linearised_velocities);
+        kept = step_linearised_at(scratch.implicit_linearised_velocities,
+                                  !may_split && newton + 1 == settings.newton_iterations);
     }
     if (kept || !may_split) return depth;
     // Still failed after its Newton iterations, and past the grip: the hand lets go, and the
@@ -248,6 +254,7 @@ void step_implicit_euler(Cloth& cloth, const ForceField& field, double dt,
     work.statistics.implicit_iterations = 0;
     work.statistics.implicit_splits = 0;
     work.statistics.implicit_newton_iterations = 0;
+    work.statistics.implicit_tries_stopped_early = 0;
     work.statistics.implicit_hand_let_go = false;
     // A step-size controller's memory: a step that had to be split is followed by one that
     // starts one level coarser than its finest piece, not by a whole step that would most

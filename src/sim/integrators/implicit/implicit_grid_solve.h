@@ -80,7 +80,8 @@ struct ImplicitSolveSettings {
     // already fail there, as the linearisation's error depends on where the step ends, not
     // on its last digits, and stop at once. A try judged kept solves on from where it was,
     // the same iterations as without the judgement, and is judged again at the end, so
-    // what is kept is never judged on a loose solve (0: judged only at the end).
+    // what is kept is never judged on a loose solve. The last try a step may take is kept
+    // whatever its judgement, so it is never stopped (0: judged only at the end).
     double early_judgement = 10.0;
 
     double tolerance(double dt) const {

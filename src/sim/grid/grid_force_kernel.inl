@@ -280,24 +280,34 @@ void over_spring_rows(const Job& job, int row_begin, int row_end, Body&& body) {
     }
 }
 
-// The divergence guard's stretch test on rows [row_begin, row_end): true if some live spring
-// starting there has |d|² > ratio_squared L². Reads positions in place (interleaved x y z);
-// no square root, no early exit, so the loop vectorises.
-bool rows_maybe_overstretched(const Job& job, double ratio_squared, int row_begin, int row_end) {
+// Whether some live spring of one row's run (over_spring_rows' a, b, rest and columns) has
+// |d|² > ratio_squared L². Reads positions in place (interleaved x y z); no square root, no
+// early exit, so the loop vectorises.
+bool row_maybe_overstretched(const double* __restrict a, const double* __restrict b,
+                             const double* __restrict rest, std::size_t c_begin, std::size_t c_end,
+                             double ratio_squared) {
     unsigned suspect = 0;
-    over_spring_rows(job, row_begin, row_end,
-                     [&](const double* __restrict a, const double* __restrict b,
-                         const double* __restrict rest, std::size_t c_begin, std::size_t c_end) {
-                         for (std::size_t c = c_begin; c < c_end; ++c) {
-                             const double dx = b[3 * c] - a[3 * c],
-                                          dy = b[3 * c + 1] - a[3 * c + 1],
-                                          dz = b[3 * c + 2] - a[3 * c + 2];
-                             const double limit = ratio_squared * rest[c] * rest[c];
-                             const double live = rest[c] >= 0.0 ? 1.0 : 0.0;
-                             suspect |= live * (dx * dx + dy * dy + dz * dz) > limit ? 1u : 0u;
-                         }
-                     });
+    for (std::size_t c = c_begin; c < c_end; ++c) {
+        const double dx = b[3 * c] - a[3 * c], dy = b[3 * c + 1] - a[3 * c + 1],
+                     dz = b[3 * c + 2] - a[3 * c + 2];
+        const double limit = ratio_squared * rest[c] * rest[c];
+        const double live = rest[c] >= 0.0 ? 1.0 : 0.0;
+        suspect |= live * (dx * dx + dy * dy + dz * dz) > limit ? 1u : 0u;
+    }
     return suspect != 0;
+}
+
+// The divergence guard's stretch test on rows [row_begin, row_end): true if some live spring
+// starting there has |d|² > ratio_squared L².
+bool rows_maybe_overstretched(const Job& job, double ratio_squared, int row_begin, int row_end) {
+    bool suspect = false;
+    over_spring_rows(job, row_begin, row_end,
+                     [&](const double* a, const double* b, const double* rest, std::size_t c_begin,
+                         std::size_t c_end) {
+                         if (row_maybe_overstretched(a, b, rest, c_begin, c_end, ratio_squared))
+                             suspect = true;
+                     });
+    return suspect;
 }
 
 // The divergence guard's pass over the springs after a step that moved particles far
@@ -363,16 +373,7 @@ double rows_linearisation_error(const Job& job, const double* start, double rati
             std::size_t c_begin, std::size_t c_end) {
             // Almost every row of a sheet has no spring that long: a pass without a branch
             // tells, and only a row that may have one is looked at spring by spring.
-            unsigned suspect = 0;
-            for (std::size_t c = c_begin; c < c_end; ++c) {
-                const double dx = b[3 * c] - a[3 * c], dy = b[3 * c + 1] - a[3 * c + 1],
-                             dz = b[3 * c + 2] - a[3 * c + 2];
-                const double live = rest[c] >= 0.0 ? 1.0 : 0.0;
-                suspect |= live * (dx * dx + dy * dy + dz * dz) > ratio_squared * rest[c] * rest[c]
-                               ? 1u
-                               : 0u;
-            }
-            if (suspect == 0) return;
+            if (!row_maybe_overstretched(a, b, rest, c_begin, c_end, ratio_squared)) return;
             const double* a0 = start + (a - job.positions);
             const double* b0 = start + (b - job.positions);
             for (std::size_t c = c_begin; c < c_end; ++c) {

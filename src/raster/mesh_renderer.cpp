@@ -10,6 +10,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
+#include "raster/binning_avx2.h"
 #include "raster/clipping.h"
 #include "raster/surface_shading.h"
 #include "raster/triangle_rasterizer.h"
@@ -161,8 +162,9 @@ ClipVertex clip_vertex(const PreparedMesh& prepared, std::size_t i) {
     return vertex;
 }
 
-// Draws the triangles `for_each_triangle` visits (it calls its argument with each index,
-// in order) inside `scissor`.
+// Draws the triangles `for_each_triangle` visits inside `scissor`: it calls its first
+// argument with each triangle's index and its second with each binned fragment, in the
+// mesh's order.
 template <bool HasUv, bool HasColour, class TriangleVisitor>
 void draw_prepared_with(Framebuffer& framebuffer, const PreparedMesh& prepared,
                         const SurfaceStyle& style, const Lighting& lighting,
@@ -188,26 +190,38 @@ void draw_prepared_with(Framebuffer& framebuffer, const PreparedMesh& prepared,
     const Shader shader{surface, framebuffer.colours().data(), &queue};
     RasterState state;
     state.scissor = bounds;
-    for_each_triangle([&](std::size_t index) {
-        const TriangleIndices& t = triangles[index];
-        if (t[0] >= count || t[1] >= count || t[2] >= count) return;
-        const TriangleOutcodes codes{outcodes[t[0]], outcodes[t[1]], outcodes[t[2]]};
-        if (codes.culled()) return;
-        if (codes.needs_clipping()) {
-            draw_triangle(framebuffer, state, clip_vertex<HasUv, HasColour>(prepared, t[0]),
-                          clip_vertex<HasUv, HasColour>(prepared, t[1]),
-                          clip_vertex<HasUv, HasColour>(prepared, t[2]), codes, shader);
-            return;
-        }
-        const WindowVertex &a = window[t[0]], &b = window[t[1]], &c = window[t[2]];
-        if ((a.y < band_top && b.y < band_top && c.y < band_top) ||
-            (a.y > band_bottom && b.y > band_bottom && c.y > band_bottom))
-            return;
-        const float* const over_w[3] = {varyings_over_w + t[0] * stride,
-                                        varyings_over_w + t[1] * stride,
-                                        varyings_over_w + t[2] * stride};
-        draw_prepared_triangle(framebuffer, state, a, b, c, over_w, shader);
-    });
+    for_each_triangle(
+        [&](std::size_t index) {
+            const TriangleIndices& t = triangles[index];
+            if (t[0] >= count || t[1] >= count || t[2] >= count) return;
+            const TriangleOutcodes codes{outcodes[t[0]], outcodes[t[1]], outcodes[t[2]]};
+            if (codes.culled()) return;
+            if (codes.needs_clipping()) {
+                draw_triangle(framebuffer, state, clip_vertex<HasUv, HasColour>(prepared, t[0]),
+                              clip_vertex<HasUv, HasColour>(prepared, t[1]),
+                              clip_vertex<HasUv, HasColour>(prepared, t[2]), codes, shader);
+                return;
+            }
+            const WindowVertex &a = window[t[0]], &b = window[t[1]], &c = window[t[2]];
+            if ((a.y < band_top && b.y < band_top && c.y < band_top) ||
+                (a.y > band_bottom && b.y > band_bottom && c.y > band_bottom))
+                return;
+            const float* const over_w[3] = {varyings_over_w + t[0] * stride,
+                                            varyings_over_w + t[1] * stride,
+                                            varyings_over_w + t[2] * stride};
+            draw_prepared_triangle(framebuffer, state, a, b, c, over_w, shader);
+        },
+        [&](const BinnedFragment& fragment) {
+            const TriangleIndices& t = triangles[fragment.triangle_index()];
+            // Setup order: a front face swaps its second and third vertices.
+            const bool front = fragment.front_facing();
+            const std::uint32_t v0 = t[0], v1 = front ? t[2] : t[1], v2 = front ? t[1] : t[2];
+            const WindowVertex* const vertex[3] = {window + v0, window + v1, window + v2};
+            const float* const over_w[3] = {varyings_over_w + v0 * stride,
+                                            varyings_over_w + v1 * stride,
+                                            varyings_over_w + v2 * stride};
+            shade_binned_fragment(framebuffer, state, fragment, vertex, over_w, shader);
+        });
     shader.flush();
 }
 
@@ -233,13 +247,22 @@ void draw_prepared_triangles(Framebuffer& framebuffer, const PreparedMesh& prepa
 }
 
 // Triangles [begin, end) into the bands they may reach: lists[slice * band_count + band].
+// How binning may go about it.
+struct BinningChoice {
+    bool with_fragments = true;  // tiny triangles go in as fragments, else as triangles
+    bool with_avx2 = false;      // eight triangles at a time (binning_avx2.h)
+};
+
+// Triangles [begin, end) into the bands they may reach: lists[slice * band_count + band].
 void bin_triangle_run(const PreparedMesh& prepared, std::size_t begin, std::size_t end, int slice,
-                      TriangleBands& bands) {
+                      BinningChoice choice, TriangleBands& bands) {
     const std::size_t count = prepared.clip.size();
     const std::uint32_t* outcodes = prepared.outcodes.data();
     const WindowVertex* window = prepared.window.data();
+    const TriangleIndices* triangles = prepared.mesh.triangles.data();
     const PixelRect viewport{0, 0, prepared.width, prepared.height};
     std::vector<std::uint32_t>* lists = bands.lists.data() + slice * bands.band_count;
+    std::vector<BinnedFragment>* fragments = bands.fragments.data() + slice * bands.band_count;
     // The band of a pixel row: a shift when bands are a power of two rows high (the
     // frame's are), as a division per triangle would be a large part of binning.
     const int band_shift = std::has_single_bit(static_cast<unsigned>(bands.band_height))
@@ -249,24 +272,91 @@ void bin_triangle_run(const PreparedMesh& prepared, std::size_t begin, std::size
         return std::min(band_shift >= 0 ? row >> band_shift : row / bands.band_height,
                         bands.band_count - 1);
     };
-    for (std::size_t index = begin; index < end; ++index) {
-        const TriangleIndices& t = prepared.mesh.triangles[index];
-        if (t[0] >= count || t[1] >= count || t[2] >= count) continue;
+    // The pixel centres a tiny triangle covers, each into its row's band.
+    auto add_fragments = [&](std::size_t index, bool front_facing, int x_begin, int y_begin,
+                             unsigned covered, auto&& weights_at) {
+        BinnedFragment fragment;
+        fragment.triangle =
+            static_cast<std::uint32_t>(index) | (front_facing ? BinnedFragment::front_bit : 0u);
+        for (; covered != 0; covered &= covered - 1) {
+            const int k = std::countr_zero(covered);
+            const int y = y_begin + k / tiny_box_side;
+            fragment.x = static_cast<std::uint16_t>(x_begin + k % tiny_box_side);
+            fragment.y = static_cast<std::uint16_t>(y);
+            weights_at(k, fragment.weight);
+            fragments[band_of(y)].push_back(fragment);
+        }
+    };
+    BinnedCoverage coverage;
+    auto bin_one = [&](std::size_t index) {
+        const TriangleIndices& t = triangles[index];
+        if (t[0] >= count || t[1] >= count || t[2] >= count) return;
         const TriangleOutcodes codes{outcodes[t[0]], outcodes[t[1]], outcodes[t[2]]};
-        if (codes.culled()) continue;
+        if (codes.culled()) return;
         int first = 0, last = bands.band_count - 1;
         if (!codes.needs_clipping()) {
             // The bands of the rows of the pixel centres it may cover. Many triangles of a
             // sheet seen whole cover none, and go into no band.
-            const CoveredRows rows =
-                covered_rows(window[t[0]], window[t[1]], window[t[2]], viewport);
-            if (rows.empty()) continue;
-            first = band_of(rows.first);
-            last = band_of(rows.last);
+            bin_coverage(window[t[0]], window[t[1]], window[t[2]], viewport, coverage);
+            if (coverage.empty()) return;
+            if (coverage.tiny && choice.with_fragments) {
+                add_fragments(index, coverage.front_facing, coverage.x_begin, coverage.y_begin,
+                              coverage.covered, [&](int k, float(&weight)[3]) {
+                                  for (int i = 0; i < 3; ++i) weight[i] = coverage.weights[k][i];
+                              });
+                return;
+            }
+            first = band_of(coverage.first);
+            last = band_of(coverage.last);
         }
         for (int band = first; band <= last; ++band)
             lists[band].push_back(static_cast<std::uint32_t>(index));
+    };
+
+    std::size_t index = begin;
+    if (choice.with_fragments && choice.with_avx2) {
+        // Where the lanes leave most triangles undecided (a mesh seen up close, its triangles
+        // many pixels wide), classifying them first only adds work: the next few groups then
+        // go straight to the scalar path. The bands are the same either way.
+        constexpr int mostly_undecided = 6, groups_skipped = 8;
+        int skipped = 0;
+        BinningGroup group;
+        for (; index + binning_group_size <= end; index += binning_group_size) {
+            if (skipped > 0) {
+                --skipped;
+                for (int lane = 0; lane < binning_group_size; ++lane) bin_one(index + lane);
+                continue;
+            }
+            classify_for_binning_avx2(triangles + index, static_cast<std::uint32_t>(count),
+                                      outcodes, window, prepared.width, prepared.height, group);
+            int undecided = 0;
+            for (int lane = 0; lane < binning_group_size; ++lane)
+                undecided += group.kind[lane] == BinningGroup::undecided ? 1 : 0;
+            if (undecided >= mostly_undecided) skipped = groups_skipped;
+            for (int lane = 0; lane < binning_group_size; ++lane) {
+                if (group.kind[lane] == BinningGroup::undecided) {
+                    bin_one(index + lane);
+                } else if (group.kind[lane] == BinningGroup::box_rows) {
+                    const int last = band_of(group.y_end[lane] - 1);
+                    for (int band = band_of(group.y_begin[lane]); band <= last; ++band)
+                        lists[band].push_back(static_cast<std::uint32_t>(index + lane));
+                } else if (group.kind[lane] == BinningGroup::tiny) {
+                    // As bin_coverage weighs a covered centre.
+                    const auto inverse_area =
+                        static_cast<float>(1.0 / static_cast<double>(group.doubled_area[lane]));
+                    add_fragments(index + lane, group.front_facing[lane] != 0, group.x_begin[lane],
+                                  group.y_begin[lane], group.covered[lane],
+                                  [&](int k, float(&weight)[3]) {
+                                      for (int i = 0; i < 3; ++i)
+                                          weight[i] = static_cast<float>(group.edge[k][i][lane] -
+                                                                         group.bias[i][lane]) *
+                                                      inverse_area;
+                                  });
+                }
+            }
+        }
     }
+    for (; index < end; ++index) bin_one(index);
 }
 
 }  // namespace
@@ -317,9 +407,11 @@ bool prepare_mesh(const Camera& camera, int width, int height, const MeshView& m
 void draw_prepared_mesh(Framebuffer& framebuffer, const PreparedMesh& prepared,
                         const SurfaceStyle& style, const Lighting& lighting,
                         const PixelRect& scissor) {
-    draw_prepared_triangles(framebuffer, prepared, style, lighting, scissor, [&](auto&& draw) {
-        for (std::size_t index = 0; index < prepared.mesh.triangles.size(); ++index) draw(index);
-    });
+    draw_prepared_triangles(
+        framebuffer, prepared, style, lighting, scissor, [&](auto&& draw, auto&&) {
+            for (std::size_t index = 0; index < prepared.mesh.triangles.size(); ++index)
+                draw(index);
+        });
 }
 
 PixelRect TriangleBands::band_rect(int band, int width, int height) const {
@@ -328,7 +420,7 @@ PixelRect TriangleBands::band_rect(int band, int width, int height) const {
 }
 
 void bin_triangles(const PreparedMesh& prepared, int band_height, TriangleBands& bands,
-                   WorkerPool* pool) {
+                   WorkerPool* pool, bool allow_avx2) {
     bands.band_height = std::max(band_height, 1);
     bands.band_count = std::max((prepared.height + bands.band_height - 1) / bands.band_height, 1);
     const std::size_t triangle_count = prepared.mesh.triangles.size();
@@ -338,9 +430,16 @@ void bin_triangles(const PreparedMesh& prepared, int band_height, TriangleBands&
     bands.slice_count = threaded ? pool->thread_count() : 1;
     const auto list_count = static_cast<std::size_t>(bands.slice_count * bands.band_count);
     if (bands.lists.size() < list_count) bands.lists.resize(list_count);
+    if (bands.fragments.size() < list_count) bands.fragments.resize(list_count);
     for (std::vector<std::uint32_t>& list : bands.lists) list.clear();
+    for (std::vector<BinnedFragment>& list : bands.fragments) list.clear();
+    // A fragment holds its pixel in 16 bits a coordinate and its triangle's index in 31.
+    BinningChoice choice;
+    choice.with_fragments = prepared.width <= 0xffff && prepared.height <= 0xffff &&
+                            triangle_count <= BinnedFragment::front_bit;
+    choice.with_avx2 = allow_avx2 && binning_avx2_supported();
     if (!threaded) {
-        bin_triangle_run(prepared, 0, triangle_count, 0, bands);
+        bin_triangle_run(prepared, 0, triangle_count, 0, choice, bands);
         return;
     }
     // One run per slice, so each slice writes only its own lists.
@@ -348,7 +447,8 @@ void bin_triangles(const PreparedMesh& prepared, int band_height, TriangleBands&
     pool->parallel_for(slices, [&](std::size_t begin, std::size_t end) {
         for (std::size_t slice = begin; slice < end; ++slice)
             bin_triangle_run(prepared, triangle_count * slice / slices,
-                             triangle_count * (slice + 1) / slices, static_cast<int>(slice), bands);
+                             triangle_count * (slice + 1) / slices, static_cast<int>(slice), choice,
+                             bands);
     });
 }
 
@@ -357,12 +457,9 @@ void draw_prepared_band(Framebuffer& framebuffer, const PreparedMesh& prepared,
                         const Lighting& lighting) {
     if (band < 0 || band >= bands.band_count) return;
     const PixelRect rect = bands.band_rect(band, framebuffer.width(), framebuffer.height());
-    draw_prepared_triangles(framebuffer, prepared, style, lighting, rect, [&](auto&& draw) {
-        for (int slice = 0; slice < bands.slice_count; ++slice)
-            for (std::uint32_t index :
-                 bands.lists[static_cast<std::size_t>(slice * bands.band_count + band)])
-                draw(index);
-    });
+    draw_prepared_triangles(
+        framebuffer, prepared, style, lighting, rect,
+        [&](auto&& draw, auto&& shade) { visit_band(bands, band, draw, shade); });
 }
 
 bool draw_mesh(Framebuffer& framebuffer, const Camera& camera, const MeshView& mesh,

@@ -114,16 +114,41 @@ struct TriangleBands {
     // The triangles of run s that may reach band b, in ascending order:
     // lists[s * band_count + b]. Run after run, they are in the mesh's own order.
     std::vector<std::vector<std::uint32_t>> lists;
+    // The pixel centres of band b that run s's tiny triangles cover (triangle_setup.h), in the
+    // order of their triangles and, within one, in the pixel loop's order:
+    // fragments[s * band_count + b]. A tiny triangle is in no list above: these say all that
+    // drawing it needs.
+    std::vector<std::vector<BinnedFragment>> fragments;
 
     PixelRect band_rect(int band, int width, int height) const;
 };
 
+// Visits what band `band` holds in the mesh's order, run after run: draw(index) for each
+// binned triangle and shade(fragment) for each binned fragment.
+template <class Draw, class Shade>
+void visit_band(const TriangleBands& bands, int band, Draw&& draw, Shade&& shade) {
+    for (int slice = 0; slice < bands.slice_count; ++slice) {
+        const auto list = static_cast<std::size_t>(slice * bands.band_count + band);
+        const std::vector<std::uint32_t>& triangles = bands.lists[list];
+        const std::vector<BinnedFragment>& fragments = bands.fragments[list];
+        std::size_t next = 0;
+        for (const BinnedFragment& fragment : fragments) {
+            for (; next < triangles.size() && triangles[next] < fragment.triangle_index(); ++next)
+                draw(triangles[next]);
+            shade(fragment);
+        }
+        for (; next < triangles.size(); ++next) draw(triangles[next]);
+    }
+}
+
 // Sorts the prepared mesh's triangles into bands of `band_height` rows, splitting the
 // triangles between the pool's threads in consecutive runs. Triangles that would draw
 // nothing (culled, of zero area once snapped, or between pixel centres) go into no band;
-// those that need clipping into all.
+// those that need clipping into all; tiny ones (a box of at most 2×2 pixel centres) are set
+// up once here and go in as the pixels they cover. With `allow_avx2`, where the CPU has it,
+// triangles are classified eight at a time (binning_avx2.h); the bands are the same either way.
 void bin_triangles(const PreparedMesh& prepared, int band_height, TriangleBands& bands,
-                   WorkerPool* pool = nullptr);
+                   WorkerPool* pool = nullptr, bool allow_avx2 = true);
 
 // Draws band `band` of a prepared mesh from its binned triangles: exactly the pixels that
 // draw_prepared_mesh draws with the band's rows as scissor, in the same order.

@@ -29,8 +29,9 @@ void transform_flat(const glm::mat4& clip_from_model, PreparedMesh& prepared,
     }
 }
 
-// The triangles `for_each_triangle` visits (it calls its argument with each index, in order)
-// inside `scissor`, as draw_prepared_mesh draws them but with no varyings.
+// The triangles `for_each_triangle` visits inside `scissor` (it calls its first argument with
+// each triangle's index and its second with each binned fragment, in the mesh's order), as
+// draw_prepared_mesh draws them but with no varyings.
 template <class TriangleVisitor>
 void draw_flat_with(Framebuffer& framebuffer, const PreparedMesh& prepared, Rgba8 colour,
                     const PixelRect& scissor, TriangleVisitor&& for_each_triangle) {
@@ -43,27 +44,37 @@ void draw_flat_with(Framebuffer& framebuffer, const PreparedMesh& prepared, Rgba
     RasterState state;
     state.scissor = bounds;
     const float* const no_varyings[3] = {nullptr, nullptr, nullptr};
-    for_each_triangle([&](std::size_t index) {
-        const TriangleIndices& t = prepared.mesh.triangles[index];
-        if (t[0] >= count || t[1] >= count || t[2] >= count) return;
-        const TriangleOutcodes codes{prepared.outcodes[t[0]], prepared.outcodes[t[1]],
-                                     prepared.outcodes[t[2]]};
-        if (codes.culled()) return;
-        if (codes.needs_clipping()) {
-            ClipVertex a, b, c;
-            a.position = prepared.clip[t[0]];
-            b.position = prepared.clip[t[1]];
-            c.position = prepared.clip[t[2]];
-            draw_triangle(framebuffer, state, a, b, c, codes, shader);
-            return;
-        }
-        const WindowVertex &a = prepared.window[t[0]], &b = prepared.window[t[1]],
-                           &c = prepared.window[t[2]];
-        if ((a.y < band_top && b.y < band_top && c.y < band_top) ||
-            (a.y > band_bottom && b.y > band_bottom && c.y > band_bottom))
-            return;
-        draw_prepared_triangle(framebuffer, state, a, b, c, no_varyings, shader);
-    });
+    for_each_triangle(
+        [&](std::size_t index) {
+            const TriangleIndices& t = prepared.mesh.triangles[index];
+            if (t[0] >= count || t[1] >= count || t[2] >= count) return;
+            const TriangleOutcodes codes{prepared.outcodes[t[0]], prepared.outcodes[t[1]],
+                                         prepared.outcodes[t[2]]};
+            if (codes.culled()) return;
+            if (codes.needs_clipping()) {
+                ClipVertex a, b, c;
+                a.position = prepared.clip[t[0]];
+                b.position = prepared.clip[t[1]];
+                c.position = prepared.clip[t[2]];
+                draw_triangle(framebuffer, state, a, b, c, codes, shader);
+                return;
+            }
+            const WindowVertex &a = prepared.window[t[0]], &b = prepared.window[t[1]],
+                               &c = prepared.window[t[2]];
+            if ((a.y < band_top && b.y < band_top && c.y < band_top) ||
+                (a.y > band_bottom && b.y > band_bottom && c.y > band_bottom))
+                return;
+            draw_prepared_triangle(framebuffer, state, a, b, c, no_varyings, shader);
+        },
+        [&](const BinnedFragment& fragment) {
+            const TriangleIndices& t = prepared.mesh.triangles[fragment.triangle_index()];
+            // Setup order: a front face swaps its second and third vertices.
+            const bool front = fragment.front_facing();
+            const WindowVertex* const vertex[3] = {&prepared.window[t[0]],
+                                                   &prepared.window[front ? t[2] : t[1]],
+                                                   &prepared.window[front ? t[1] : t[2]]};
+            shade_binned_fragment(framebuffer, state, fragment, vertex, no_varyings, shader);
+        });
 }
 
 }  // namespace
@@ -110,7 +121,7 @@ void prepare_flat_mesh(const Camera& camera, int width, int height, const MeshVi
 
 void draw_flat_mesh(Framebuffer& framebuffer, const PreparedMesh& prepared, Rgba8 colour,
                     const PixelRect& scissor) {
-    draw_flat_with(framebuffer, prepared, colour, scissor, [&](auto&& draw) {
+    draw_flat_with(framebuffer, prepared, colour, scissor, [&](auto&& draw, auto&&) {
         for (std::size_t index = 0; index < prepared.mesh.triangles.size(); ++index) draw(index);
     });
 }
@@ -119,12 +130,8 @@ void draw_flat_band(Framebuffer& framebuffer, const PreparedMesh& prepared,
                     const TriangleBands& bands, int band, Rgba8 colour) {
     if (band < 0 || band >= bands.band_count) return;
     const PixelRect rect = bands.band_rect(band, framebuffer.width(), framebuffer.height());
-    draw_flat_with(framebuffer, prepared, colour, rect, [&](auto&& draw) {
-        for (int slice = 0; slice < bands.slice_count; ++slice)
-            for (std::uint32_t index :
-                 bands.lists[static_cast<std::size_t>(slice * bands.band_count + band)])
-                draw(index);
-    });
+    draw_flat_with(framebuffer, prepared, colour, rect,
+                   [&](auto&& draw, auto&& shade) { visit_band(bands, band, draw, shade); });
 }
 
 }  // namespace weft::raster

@@ -381,6 +381,46 @@ void draw_triangle(Framebuffer& framebuffer, const RasterState& state, const Cli
     }
 }
 
+// Stages 5–6 for a pixel centre that binning found a tiny triangle to cover (BinnedFragment),
+// given the triangle's vertices and their varyings divided by w, both in setup order: the
+// same depth test, the same perspective-correct varyings and the same call of the shader, to
+// the bit, as PixelShading gives that centre when the pixel loops find it.
+template <class Shader>
+void shade_binned_fragment(Framebuffer& framebuffer, const RasterState& state,
+                           const BinnedFragment& binned, const WindowVertex* const (&vertex)[3],
+                           const float* const (&varying_over_w)[3], Shader& shader) {
+    const float b0 = binned.weight[0], b1 = binned.weight[1], b2 = binned.weight[2];
+    const float depth = b0 * vertex[0]->depth + b1 * vertex[1]->depth + b2 * vertex[2]->depth;
+    const std::size_t index =
+        std::size_t{binned.y} * static_cast<std::size_t>(framebuffer.width()) + binned.x;
+    float* const depths = framebuffer.depths().data();
+    if (state.depth_test && !(depth < depths[index])) return;
+    std::array<float, max_varyings> varyings;
+    const int varying_count = detail::varying_count_of<Shader>(state);
+    if (varying_count > 0) {
+        const float w = 1.0f / (b0 * vertex[0]->inverse_w + b1 * vertex[1]->inverse_w +
+                                b2 * vertex[2]->inverse_w);
+        for (int k = 0; k < varying_count; ++k) {
+            varyings[k] = (b0 * varying_over_w[0][k] + b1 * varying_over_w[1][k] +
+                           b2 * varying_over_w[2][k]) *
+                          w;
+        }
+    }
+    Fragment fragment;
+    fragment.x = binned.x;
+    fragment.y = binned.y;
+    fragment.depth = depth;
+    fragment.front_facing = binned.front_facing();
+    fragment.varyings = varyings.data();
+    if constexpr (detail::is_deferred<Shader>()) {
+        if (state.depth_write) depths[index] = depth;
+        shader.defer(index, static_cast<const Fragment&>(fragment));
+    } else {
+        framebuffer.colours()[index] = shader(static_cast<const Fragment&>(fragment));
+        if (state.depth_write) depths[index] = depth;
+    }
+}
+
 // A triangle of a prepared mesh that needs no clipping: its vertices the caller has taken
 // through the divide, viewport and snap (window_vertex), and their varyings divided by w
 // (varying_over_w[i] for vertex i: the state's varying count of them, each the vertex's

@@ -19,6 +19,7 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <utility>
 
@@ -236,41 +237,100 @@ inline TinyCoverage tiny_coverage(const std::int64_t (&at_first)[3],
 
 }  // namespace detail
 
-// The rows of the pixel centres inside `bounds` that the snapped triangle covers, exactly
-// as setup_triangle and the pixel loop decide it, for a triangle whose box holds at most
-// 2×2 of them: a sheet seen whole can have about as many triangles as pixels, and many of
-// them fall between pixel centres and cover none. Empty (first > last) when it covers none,
-// has zero area once snapped, or its box holds no pixel centre of `bounds`. A larger
-// triangle is not examined: the rows of its box.
+// A pixel centre that a tiny triangle covers, found while binning (bin_coverage), with all
+// that shading it needs of the triangle's setup: its barycentric weights, as the pixel loop
+// computes them from the same integer edge values. A sheet seen whole has about as many
+// triangles as pixels: drawing these, the band that draws a tiny triangle does not set it up
+// again.
+struct BinnedFragment {
+    static constexpr std::uint32_t front_bit = std::uint32_t{1} << 31;
+    std::uint32_t triangle = 0;  // the mesh's triangle index, | front_bit when front-facing
+    std::uint16_t x = 0, y = 0;  // pixel
+    float weight[3] = {};        // barycentric of setup vertex i (triangle_setup.h's order)
+
+    std::uint32_t triangle_index() const { return triangle & ~front_bit; }
+    bool front_facing() const { return (triangle & front_bit) != 0; }
+};
+
+// What binning learns of a snapped triangle inside `bounds`: the rows of the pixel centres
+// it covers, exactly as setup_triangle and the pixel loop decide it, for a triangle whose box
+// holds at most 2×2 of them (tiny) — and then also which of those centres it covers and their
+// weights. Many triangles of a sheet seen whole fall between pixel centres and cover none.
+// A larger triangle is not examined: the rows of its box. Empty rows (first > last) when it
+// covers nothing, has zero area once snapped, or its box holds no pixel centre of `bounds`.
+struct BinnedCoverage {
+    int first = 0, last = -1;  // rows, inclusive
+    bool tiny = false;
+    // For a tiny triangle that covers something: its box's first pixel centre, the covered
+    // centres as bit (row · 2 + column), the side seen, and each covered centre's weights.
+    int x_begin = 0, y_begin = 0;
+    unsigned covered = 0;
+    bool front_facing = false;
+    float weights[tiny_box_side * tiny_box_side][3];
+
+    bool empty() const { return first > last; }
+};
+inline void bin_coverage(const WindowVertex& vertex0, const WindowVertex& vertex1,
+                         const WindowVertex& vertex2, const PixelRect& bounds,
+                         BinnedCoverage& coverage) {
+    coverage.first = 0;
+    coverage.last = -1;
+    coverage.tiny = false;
+    std::int64_t area = detail::doubled_area(vertex0, vertex1, vertex2);
+    if (area == 0) return;
+    const PixelRect box = detail::covered_box(vertex0, vertex1, vertex2, bounds);
+    if (box.empty()) return;
+    if (box.width() > tiny_box_side || box.height() > tiny_box_side) {
+        coverage.first = box.y_begin;
+        coverage.last = box.y_end - 1;
+        return;
+    }
+    const WindowVertex* p[3] = {&vertex0, &vertex1, &vertex2};
+    coverage.front_facing = area < 0;
+    if (coverage.front_facing) {  // as setup_triangle orders a front face
+        std::swap(p[1], p[2]);
+        area = -area;
+    }
+    const std::int64_t half = subpixel_scale / 2;
+    const std::int64_t origin_x = std::int64_t{box.x_begin} * subpixel_scale + half;
+    const std::int64_t origin_y = std::int64_t{box.y_begin} * subpixel_scale + half;
+    std::int64_t at_first[3], step_x[3], step_y[3], bias[3];
+    for (int i = 0; i < 3; ++i) {  // as setup_triangle makes them
+        const detail::EdgeFunction edge(*p[(i + 1) % 3], *p[(i + 2) % 3]);
+        at_first[i] = edge.at(origin_x, origin_y);
+        step_x[i] = edge.gradient_x * subpixel_scale;
+        step_y[i] = edge.gradient_y * subpixel_scale;
+        bias[i] = edge.bias;
+    }
+    const detail::TinyCoverage tiny =
+        detail::tiny_coverage(at_first, step_x, step_y, box.width(), box.height());
+    if (tiny.covered == 0) return;
+    const bool top_row = (tiny.covered & 0b0011u) != 0, bottom_row = (tiny.covered & 0b1100u) != 0;
+    coverage.first = top_row ? box.y_begin : box.y_begin + 1;
+    coverage.last = bottom_row ? box.y_begin + 1 : box.y_begin;
+    coverage.tiny = true;
+    coverage.x_begin = box.x_begin;
+    coverage.y_begin = box.y_begin;
+    coverage.covered = tiny.covered;
+    // As PixelShading weighs a covered centre: the unbiased edge value over the doubled area.
+    const auto inverse_area = static_cast<float>(1.0 / static_cast<double>(area));
+    for (unsigned left = tiny.covered; left != 0; left &= left - 1) {
+        const int k = std::countr_zero(left);
+        for (int i = 0; i < 3; ++i)
+            coverage.weights[k][i] = static_cast<float>(tiny.edges[k][i] - bias[i]) * inverse_area;
+    }
+}
+
+// The rows of bin_coverage alone.
 struct CoveredRows {
     int first = 0, last = -1;  // inclusive
     bool empty() const { return first > last; }
 };
 inline CoveredRows covered_rows(const WindowVertex& vertex0, const WindowVertex& vertex1,
                                 const WindowVertex& vertex2, const PixelRect& bounds) {
-    const std::int64_t area = detail::doubled_area(vertex0, vertex1, vertex2);
-    if (area == 0) return {};
-    const PixelRect box = detail::covered_box(vertex0, vertex1, vertex2, bounds);
-    if (box.empty()) return {};
-    if (box.width() > tiny_box_side || box.height() > tiny_box_side)
-        return {box.y_begin, box.y_end - 1};
-    const WindowVertex* p[3] = {&vertex0, &vertex1, &vertex2};
-    if (area < 0) std::swap(p[1], p[2]);  // as setup_triangle orders a front face
-    const std::int64_t half = subpixel_scale / 2;
-    const std::int64_t origin_x = std::int64_t{box.x_begin} * subpixel_scale + half;
-    const std::int64_t origin_y = std::int64_t{box.y_begin} * subpixel_scale + half;
-    std::int64_t at_first[3], step_x[3], step_y[3];
-    for (int i = 0; i < 3; ++i) {  // as setup_triangle makes them
-        const detail::EdgeFunction edge(*p[(i + 1) % 3], *p[(i + 2) % 3]);
-        at_first[i] = edge.at(origin_x, origin_y);
-        step_x[i] = edge.gradient_x * subpixel_scale;
-        step_y[i] = edge.gradient_y * subpixel_scale;
-    }
-    const unsigned covered =
-        detail::tiny_coverage(at_first, step_x, step_y, box.width(), box.height()).covered;
-    if (covered == 0) return {};
-    const bool top_row = (covered & 0b0011u) != 0, bottom_row = (covered & 0b1100u) != 0;
-    return {top_row ? box.y_begin : box.y_begin + 1, bottom_row ? box.y_begin + 1 : box.y_begin};
+    BinnedCoverage coverage;
+    bin_coverage(vertex0, vertex1, vertex2, bounds, coverage);
+    return {coverage.first, coverage.last};
 }
 
 }  // namespace weft::raster

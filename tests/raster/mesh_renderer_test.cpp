@@ -337,7 +337,10 @@ TEST(Sphere, SilhouetteMatchesTheAnalyticDiscAndNormalsPointOutwards) {
 
 // A mesh drawn band by band from its binned triangles lands on exactly the pixels and depths
 // of one whole draw: for bands of several heights, binned on one thread and on two, with
-// triangles crossing the near plane (binned into every band) and triangles off screen.
+// triangles crossing the near plane (binned into every band), triangles off screen, and a
+// folded sheet finer than the pixels (its tiny triangles binned as the pixels they cover,
+// where the two sides and the layers in front and behind meet), with and without the AVX2
+// classification.
 TEST(MeshRenderer, BandsOfBinnedTrianglesDrawWhatOneWholeDrawDraws) {
     const TriangleMesh sphere = make_uv_sphere(96, 48);  // 9 000 triangles: binned in threads
     const Camera camera = make_camera({0.3f, 0.2f, 3.0f}, {0.0f, 0.0f, 0.0f}, 60.0f);
@@ -364,7 +367,9 @@ TEST(MeshRenderer, BandsOfBinnedTrianglesDrawWhatOneWholeDrawDraws) {
             wall.triangles.push_back({corner + 1, corner + cells + 2, corner + cells + 1});
         }
     }
-    const MeshView views[] = {sphere_view(sphere, {0.2f, -0.1f, 0.0f}, 1.0f), wall.view()};
+    const TriangleMesh spiral = testing::spiral_sheet(300);
+    const MeshView views[] = {sphere_view(sphere, {0.2f, -0.1f, 0.0f}, 1.0f), wall.view(),
+                              spiral.view()};
     for (const MeshView& view : views) {
         PreparedMesh prepared;
         ASSERT_TRUE(prepare_mesh(camera, width, height, view, style, prepared));
@@ -376,19 +381,23 @@ TEST(MeshRenderer, BandsOfBinnedTrianglesDrawWhatOneWholeDrawDraws) {
                   width * height / 10);
         for (int band_height : {1, 7, 32, 400}) {
             for (int threads : {1, 2}) {
-                WorkerPool pool(threads);
-                TriangleBands bands;
-                bin_triangles(prepared, band_height, bands, &pool);
-                Framebuffer banded(width, height);
-                banded.clear(Rgba8{10, 20, 30, 255});
-                for (int band = bands.band_count - 1; band >= 0; --band)  // any order
-                    draw_prepared_band(banded, prepared, bands, band, style, lighting);
-                EXPECT_TRUE(std::equal(whole.colours().begin(), whole.colours().end(),
-                                       banded.colours().begin()))
-                    << band_height << " rows, " << threads << " threads";
-                EXPECT_TRUE(std::equal(whole.depths().begin(), whole.depths().end(),
-                                       banded.depths().begin()))
-                    << band_height << " rows, " << threads << " threads";
+                for (bool avx2 : {false, true}) {
+                    WorkerPool pool(threads);
+                    TriangleBands bands;
+                    bin_triangles(prepared, band_height, bands, &pool, avx2);
+                    if (view.triangles.data() == spiral.triangles.data()) {
+                        std::size_t fragments = 0;
+                        for (const std::vector<BinnedFragment>& list : bands.fragments)
+                            fragments += list.size();
+                        EXPECT_GT(fragments, static_cast<std::size_t>(width * height / 4));
+                    }
+                    Framebuffer banded(width, height);
+                    banded.clear(Rgba8{10, 20, 30, 255});
+                    for (int band = bands.band_count - 1; band >= 0; --band)  // any order
+                        draw_prepared_band(banded, prepared, bands, band, style, lighting);
+                    EXPECT_TRUE(testing::same_frame(whole, banded))
+                        << band_height << " rows, " << threads << " threads, AVX2 " << avx2;
+                }
             }
         }
     }

@@ -3,12 +3,17 @@
 // floor, drawn flat.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
+#include "parallel/worker_pool.h"
+#include "raster/framebuffer.h"
+#include "raster/mesh.h"
 #include "raster/planar_shadow.h"
+#include "raster_test_support.h"
 
 namespace weft::raster {
 namespace {
@@ -117,6 +122,44 @@ TEST(PlanarShadow, OverlappingLayersDrawOneColourNotADarkerOne) {
         shadowed += pixel == dark;
     }
     EXPECT_GT(shadowed, 1000);
+}
+
+// A shadow drawn band by band from its binned triangles is the shadow one whole draw casts, to
+// the pixel and the depth: a spiral sheet finer than the pixels, whose layers' shadows fall
+// on one another (the first layer drawn keeps a pixel both reach at one depth), on one
+// thread and on two, with and without the AVX2 classification.
+TEST(PlanarShadow, BandsOfBinnedTrianglesCastWhatOneWholeDrawCasts) {
+    const TriangleMesh spiral = testing::spiral_sheet(300);
+    const Camera camera = make_camera({0.4f, 2.5f, 2.0f}, {0.0f, -1.0f, 0.0f}, 60.0f);
+    MeshView caster = spiral.view();
+    caster.model = *shadow_projection({0.36f, 0.8f, 0.48f}, -1.0f);
+    const int width = 211, height = 163;
+    PreparedMesh prepared;
+    prepare_flat_mesh(camera, width, height, caster, prepared);
+    const Rgba8 background{40, 40, 40, 255}, dark{10, 10, 10, 255};
+    Framebuffer whole(width, height);
+    whole.clear(background);
+    draw_flat_mesh(whole, prepared, dark);
+    ASSERT_GT(std::count(whole.colours().begin(), whole.colours().end(), dark), 2000);
+    for (int band_height : {1, 7, 32}) {
+        for (int threads : {1, 2}) {
+            for (bool avx2 : {false, true}) {
+                WorkerPool pool(threads);
+                TriangleBands bands;
+                bin_triangles(prepared, band_height, bands, &pool, avx2);
+                std::size_t fragments = 0;
+                for (const std::vector<BinnedFragment>& list : bands.fragments)
+                    fragments += list.size();
+                EXPECT_GT(fragments, 2000u);
+                Framebuffer banded(width, height);
+                banded.clear(background);
+                for (int band = 0; band < bands.band_count; ++band)
+                    draw_flat_band(banded, prepared, bands, band, dark);
+                EXPECT_TRUE(testing::same_frame(whole, banded))
+                    << band_height << " rows, " << threads << " threads, AVX2 " << avx2;
+            }
+        }
+    }
 }
 
 }  // namespace

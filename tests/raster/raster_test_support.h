@@ -3,7 +3,9 @@
 // principles (not through the library) for ray-cast references.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -15,6 +17,7 @@
 #include "raster/camera.h"
 #include "raster/clipping.h"
 #include "raster/framebuffer.h"
+#include "raster/mesh.h"
 #include "raster/triangle_rasterizer.h"
 
 namespace weft::raster::testing {
@@ -91,6 +94,39 @@ inline std::optional<float> intersect_triangle(const ReferenceRay& ray, const gl
     const float t = glm::dot(e2, q) * inv;
     if (t <= 0.0f) return std::nullopt;
     return t;
+}
+
+// A sheet of `cells`² quads rolled into a spiral of more than one turn about the y axis, so
+// that seen from +z its layers overlap, showing both sides, and (finely divided) its
+// triangles are smaller than a pixel.
+inline TriangleMesh spiral_sheet(int cells) {
+    TriangleMesh sheet;
+    for (int j = 0; j <= cells; ++j) {
+        for (int i = 0; i <= cells; ++i) {
+            const float u = static_cast<float>(i) / static_cast<float>(cells);
+            const float v = static_cast<float>(j) / static_cast<float>(cells);
+            const float angle = 7.5f * u, radius = 0.3f + 0.6f * u;
+            sheet.positions.push_back(
+                {radius * std::cos(angle), 1.6f * v - 0.8f, radius * std::sin(angle)});
+            sheet.normals.push_back({std::cos(angle), 0.0f, std::sin(angle)});
+            sheet.uvs.push_back({u, v});
+        }
+    }
+    const auto row = static_cast<std::uint32_t>(cells + 1);
+    for (std::uint32_t j = 0; j + 1 < row; ++j) {
+        for (std::uint32_t i = 0; i + 1 < row; ++i) {
+            const std::uint32_t corner = j * row + i;
+            sheet.triangles.push_back({corner, corner + 1, corner + row});
+            sheet.triangles.push_back({corner + 1, corner + row + 1, corner + row});
+        }
+    }
+    return sheet;
+}
+
+// Whether two frames of one size hold the same colours and the same depths, to the byte.
+inline bool same_frame(const Framebuffer& a, const Framebuffer& b) {
+    return std::equal(a.colours().begin(), a.colours().end(), b.colours().begin()) &&
+           std::equal(a.depths().begin(), a.depths().end(), b.depths().begin());
 }
 
 }  // namespace weft::raster::testing

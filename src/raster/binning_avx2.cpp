@@ -1,0 +1,220 @@
+// Binning's classification of eight triangles at once (binning_avx2.h), built with AVX2.
+#include "raster/binning_avx2.h"
+
+#include <cstddef>
+
+#include "raster/clipping.h"
+
+#if defined(WEFT_RASTER_AVX2)
+#include <immintrin.h>
+#endif
+
+namespace weft::raster {
+
+#if defined(WEFT_RASTER_AVX2)
+
+namespace {
+
+// WindowVertex holds x and y as 64-bit integers, 24 bytes a vertex: the low halves, in 32-bit
+// units, of vertex i are at 6i (x) and 6i + 2 (y). A window position that needs no clipping
+// lies inside the guard band, |x| < 2^31 / 256 for any viewport up to 65535 pixels: its low
+// half is the value.
+static_assert(sizeof(WindowVertex) == 24 && offsetof(WindowVertex, x) == 0 &&
+              offsetof(WindowVertex, y) == 8);
+
+bool detect_avx2() {
+    return __builtin_cpu_supports("avx2");
+}
+
+__m256i gather(const void* base, __m256i index, __m256i mask) {
+    return _mm256_mask_i32gather_epi32(_mm256_setzero_si256(), static_cast<const int*>(base), index,
+                                       mask, 4);
+}
+
+__m256i select(__m256i mask, __m256i if_set, __m256i if_clear) {
+    return _mm256_blendv_epi8(if_clear, if_set, mask);
+}
+
+}  // namespace
+
+bool binning_avx2_supported() {
+    static const bool supported = detect_avx2();
+    return supported;
+}
+
+void classify_for_binning_avx2(const TriangleIndices* triangles, std::uint32_t vertex_count,
+                               const std::uint32_t* outcodes, const WindowVertex* window, int width,
+                               int height, BinningGroup& group) {
+    const __m256i ones = _mm256_set1_epi32(-1), zero = _mm256_setzero_si256();
+    // Vertex indices, checked against the vertex count (an unsigned comparison).
+    constexpr std::uint32_t largest_gathered = 0x7fffffffu / 6;
+    if (vertex_count == 0 || vertex_count > largest_gathered) {
+        for (int lane = 0; lane < binning_group_size; ++lane)
+            group.kind[lane] = BinningGroup::undecided;
+        return;
+    }
+    const __m256i corner = _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21);
+    const __m256i last_vertex = _mm256_set1_epi32(static_cast<int>(vertex_count - 1));
+    __m256i vertex[3];
+    __m256i valid = ones;
+    for (int c = 0; c < 3; ++c) {
+        vertex[c] = _mm256_i32gather_epi32(reinterpret_cast<const int*>(triangles),
+                                           _mm256_add_epi32(corner, _mm256_set1_epi32(c)), 4);
+        valid = _mm256_and_si256(
+            valid, _mm256_cmpeq_epi32(_mm256_min_epu32(vertex[c], last_vertex), vertex[c]));
+    }
+
+    // Cull and clip, as TriangleOutcodes decides them.
+    const __m256i code0 = gather(outcodes, vertex[0], valid),
+                  code1 = gather(outcodes, vertex[1], valid),
+                  code2 = gather(outcodes, vertex[2], valid);
+    const __m256i all = _mm256_and_si256(_mm256_and_si256(code0, code1), code2);
+    const __m256i any = _mm256_or_si256(_mm256_or_si256(code0, code1), code2);
+    auto has = [&](__m256i bits, std::uint32_t planes) {
+        return _mm256_xor_si256(
+            _mm256_cmpeq_epi32(_mm256_and_si256(bits, _mm256_set1_epi32(static_cast<int>(planes))),
+                               zero),
+            ones);
+    };
+    const __m256i culled = _mm256_or_si256(has(all, frustum_planes), has(any, not_finite));
+    const __m256i clipped = has(any, clipping_planes);
+
+    // Window positions, in 1/256 pixel.
+    __m256i x[3], y[3];
+    for (int c = 0; c < 3; ++c) {
+        const __m256i at = _mm256_mullo_epi32(vertex[c], _mm256_set1_epi32(6));
+        x[c] = gather(window, at, valid);
+        y[c] = gather(window, _mm256_add_epi32(at, _mm256_set1_epi32(2)), valid);
+    }
+
+    // The box of pixel centres inside the viewport (detail::covered_box).
+    const __m256i half = _mm256_set1_epi32(static_cast<int>(subpixel_scale / 2));
+    const __m256i min_x = _mm256_min_epi32(_mm256_min_epi32(x[0], x[1]), x[2]);
+    const __m256i max_x = _mm256_max_epi32(_mm256_max_epi32(x[0], x[1]), x[2]);
+    const __m256i min_y = _mm256_min_epi32(_mm256_min_epi32(y[0], y[1]), y[2]);
+    const __m256i max_y = _mm256_max_epi32(_mm256_max_epi32(y[0], y[1]), y[2]);
+    auto ceil_to_pixel = [&](__m256i v) {
+        return _mm256_srai_epi32(
+            _mm256_add_epi32(v, _mm256_set1_epi32(static_cast<int>(subpixel_scale - 1))),
+            subpixel_bits);
+    };
+    auto floor_to_pixel = [&](__m256i v) { return _mm256_srai_epi32(v, subpixel_bits); };
+    const __m256i one = _mm256_set1_epi32(1);
+    const __m256i x_begin = _mm256_max_epi32(ceil_to_pixel(_mm256_sub_epi32(min_x, half)), zero);
+    const __m256i x_end =
+        _mm256_min_epi32(_mm256_add_epi32(floor_to_pixel(_mm256_sub_epi32(max_x, half)), one),
+                         _mm256_set1_epi32(width));
+    const __m256i y_begin = _mm256_max_epi32(ceil_to_pixel(_mm256_sub_epi32(min_y, half)), zero);
+    const __m256i y_end =
+        _mm256_min_epi32(_mm256_add_epi32(floor_to_pixel(_mm256_sub_epi32(max_y, half)), one),
+                         _mm256_set1_epi32(height));
+    const __m256i columns = _mm256_sub_epi32(x_end, x_begin);
+    const __m256i rows = _mm256_sub_epi32(y_end, y_begin);
+    const __m256i empty =
+        _mm256_or_si256(_mm256_cmpgt_epi32(one, columns), _mm256_cmpgt_epi32(one, rows));
+    const __m256i two = _mm256_set1_epi32(tiny_box_side);
+    const __m256i larger =
+        _mm256_or_si256(_mm256_cmpgt_epi32(columns, two), _mm256_cmpgt_epi32(rows, two));
+    // Decidable here: an extent that keeps every product below 2^21.
+    const __m256i small_extent_limit = _mm256_set1_epi32(1024);
+    const __m256i decidable = _mm256_andnot_si256(
+        _mm256_or_si256(_mm256_cmpgt_epi32(_mm256_sub_epi32(max_x, min_x), small_extent_limit),
+                        _mm256_cmpgt_epi32(_mm256_sub_epi32(max_y, min_y), small_extent_limit)),
+        ones);
+
+    // Facing and setup order (detail::doubled_area; a front face swaps vertices 1 and 2).
+    __m256i area = _mm256_sub_epi32(
+        _mm256_mullo_epi32(_mm256_sub_epi32(x[2], x[1]), _mm256_sub_epi32(y[0], y[1])),
+        _mm256_mullo_epi32(_mm256_sub_epi32(y[2], y[1]), _mm256_sub_epi32(x[0], x[1])));
+    const __m256i front = _mm256_cmpgt_epi32(zero, area);
+    const __m256i zero_area = _mm256_cmpeq_epi32(area, zero);
+    area = _mm256_abs_epi32(area);
+    const __m256i x1 = select(front, x[2], x[1]), x2 = select(front, x[1], x[2]);
+    const __m256i y1 = select(front, y[2], y[1]), y2 = select(front, y[1], y[2]);
+    x[1] = x1;
+    x[2] = x2;
+    y[1] = y1;
+    y[2] = y2;
+
+    // Edge functions relative to the box's first pixel centre, as detail::EdgeFunction makes
+    // them: edge i runs from vertex i + 1 to vertex i + 2.
+    const __m256i origin_x = _mm256_add_epi32(_mm256_slli_epi32(x_begin, subpixel_bits), half);
+    const __m256i origin_y = _mm256_add_epi32(_mm256_slli_epi32(y_begin, subpixel_bits), half);
+    __m256i outside[tiny_box_side * tiny_box_side] = {zero, zero, zero, zero};
+    for (int i = 0; i < 3; ++i) {
+        const int a = (i + 1) % 3, b = (i + 2) % 3;
+        const __m256i gradient_x = _mm256_sub_epi32(y[a], y[b]);
+        const __m256i gradient_y = _mm256_sub_epi32(x[b], x[a]);
+        const __m256i top_left =
+            _mm256_or_si256(_mm256_cmpgt_epi32(gradient_x, zero),
+                            _mm256_and_si256(_mm256_cmpeq_epi32(gradient_x, zero),
+                                             _mm256_cmpgt_epi32(gradient_y, zero)));
+        const __m256i bias = _mm256_andnot_si256(top_left, ones);  // 0 or -1
+        const __m256i at_first = _mm256_add_epi32(
+            _mm256_add_epi32(_mm256_mullo_epi32(gradient_x, _mm256_sub_epi32(origin_x, x[a])),
+                             _mm256_mullo_epi32(gradient_y, _mm256_sub_epi32(origin_y, y[a]))),
+            bias);
+        const __m256i step_x = _mm256_slli_epi32(gradient_x, subpixel_bits);
+        const __m256i step_y = _mm256_slli_epi32(gradient_y, subpixel_bits);
+        const __m256i at[tiny_box_side * tiny_box_side] = {
+            at_first, _mm256_add_epi32(at_first, step_x), _mm256_add_epi32(at_first, step_y),
+            _mm256_add_epi32(_mm256_add_epi32(at_first, step_x), step_y)};
+        for (int k = 0; k < tiny_box_side * tiny_box_side; ++k) {
+            _mm256_storeu_si256(reinterpret_cast<__m256i*>(group.edge[k][i]), at[k]);
+            outside[k] = _mm256_or_si256(outside[k], at[k]);
+        }
+        _mm256_storeu_si256(reinterpret_cast<__m256i*>(group.bias[i]), bias);
+    }
+    // A centre is covered where no edge function is negative, inside the box.
+    const __m256i wide = _mm256_cmpeq_epi32(columns, two), tall = _mm256_cmpeq_epi32(rows, two);
+    const __m256i in_box[tiny_box_side * tiny_box_side] = {ones, wide, tall,
+                                                           _mm256_and_si256(wide, tall)};
+    __m256i covered = zero;
+    for (int k = 0; k < tiny_box_side * tiny_box_side; ++k) {
+        const __m256i inside = _mm256_and_si256(_mm256_cmpgt_epi32(outside[k], ones), in_box[k]);
+        covered = _mm256_or_si256(covered, _mm256_and_si256(inside, _mm256_set1_epi32(1 << k)));
+    }
+
+    // The lane's kind, in the scalar path's order of decisions.
+    const __m256i undecided = _mm256_or_si256(
+        _mm256_andnot_si256(valid, ones),
+        _mm256_andnot_si256(
+            culled, _mm256_or_si256(clipped, _mm256_andnot_si256(
+                                                 empty, _mm256_andnot_si256(decidable, ones)))));
+    const __m256i nothing = _mm256_or_si256(
+        _mm256_or_si256(culled, empty),
+        _mm256_or_si256(zero_area, _mm256_andnot_si256(larger, _mm256_cmpeq_epi32(covered, zero))));
+    const __m256i kind = select(undecided, _mm256_set1_epi32(BinningGroup::undecided),
+                                select(nothing, zero,
+                                       select(larger, _mm256_set1_epi32(BinningGroup::box_rows),
+                                              _mm256_set1_epi32(BinningGroup::tiny))));
+    alignas(32) std::int32_t lanes[4][binning_group_size];
+    _mm256_store_si256(reinterpret_cast<__m256i*>(lanes[0]), kind);
+    _mm256_store_si256(reinterpret_cast<__m256i*>(lanes[1]), covered);
+    _mm256_store_si256(reinterpret_cast<__m256i*>(lanes[2]), front);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(group.x_begin), x_begin);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(group.y_begin), y_begin);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(group.y_end), y_end);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(group.doubled_area), area);
+    for (int lane = 0; lane < binning_group_size; ++lane) {
+        group.kind[lane] = static_cast<std::uint8_t>(lanes[0][lane]);
+        group.covered[lane] = static_cast<std::uint8_t>(lanes[1][lane]);
+        group.front_facing[lane] = lanes[2][lane] != 0 ? 1 : 0;
+    }
+}
+
+#else
+
+bool binning_avx2_supported() {
+    return false;
+}
+
+void classify_for_binning_avx2(const TriangleIndices*, std::uint32_t, const std::uint32_t*,
+                               const WindowVertex*, int, int, BinningGroup& group) {
+    for (int lane = 0; lane < binning_group_size; ++lane)
+        group.kind[lane] = BinningGroup::undecided;
+}
+
+#endif
+
+}  // namespace weft::raster

@@ -1,0 +1,54 @@
+// Binning's classification of triangles, eight at a time with AVX2 (binning_avx2.cpp; only
+// that file gets the instruction set, and it runs only where the CPU has it).
+//
+// A sheet seen whole has about as many triangles as pixels, and nearly all of them are tiny:
+// a box of at most 2×2 pixel centres (triangle_setup.h). For those, every value binning needs
+// fits in 32 bits once taken relative to the box's first pixel centre: with the triangle's
+// extent below 1024/256 pixel a side, the edge functions stay below 2^22 and are exact in
+// int32 and in float. So the group's eight triangles get their cull, box, facing, edge
+// functions and coverage in vector lanes, and the scalar code only emits what they cover. A
+// larger triangle of such an extent needs only its box's rows. A triangle the lanes cannot
+// decide (an index out of range, one that needs clipping, or an extent of more than 1024/256
+// pixel) is left to the scalar path: it says so, and nothing else.
+#pragma once
+
+#include <cstdint>
+
+#include "raster/mesh.h"
+#include "raster/triangle_setup.h"
+
+namespace weft::raster {
+
+inline constexpr int binning_group_size = 8;
+
+// What the lanes decided, lane by lane (lane i is the group's i-th triangle).
+struct BinningGroup {
+    enum Kind : std::uint8_t {
+        draws_nothing = 0,  // culled, outside the view, between pixel centres or of zero area
+        tiny = 1,           // covers the centres in `covered`, with the values below
+        box_rows = 2,       // larger than tiny: may reach rows [y_begin, y_end)
+        undecided = 3,      // for the scalar path
+    };
+    std::uint8_t kind[binning_group_size];
+    std::uint8_t covered[binning_group_size];  // bit (row · 2 + column) of the box
+    std::uint8_t front_facing[binning_group_size];
+    std::int32_t x_begin[binning_group_size], y_begin[binning_group_size];
+    std::int32_t y_end[binning_group_size];
+    std::int32_t doubled_area[binning_group_size];  // positive: in setup order
+    // The biased edge function i at centre k (first, right, below, diagonal), and edge i's bias:
+    // the same integers as setup_triangle's.
+    std::int32_t edge[tiny_box_side * tiny_box_side][3][binning_group_size];
+    std::int32_t bias[3][binning_group_size];
+};
+
+// Whether this build has the AVX2 classification and this CPU can run it.
+bool binning_avx2_supported();
+
+// Classifies the eight triangles from `triangles` (of a mesh with `vertex_count` vertices,
+// whose outcodes and window positions are given) inside a viewport width × height pixels of at
+// most 65535 a side. Only where binning_avx2_supported().
+void classify_for_binning_avx2(const TriangleIndices* triangles, std::uint32_t vertex_count,
+                               const std::uint32_t* outcodes, const WindowVertex* window, int width,
+                               int height, BinningGroup& group);
+
+}  // namespace weft::raster

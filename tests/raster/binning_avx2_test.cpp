@@ -1,0 +1,145 @@
+// Binning's AVX2 classification (raster/binning_avx2.h) against the scalar binning it stands
+// in for (bin_coverage): for every lane it decides, the same coverage, facing, box and weights
+// to the bit, or the same rows; the lanes it leaves undecided are only those it must (an index
+// out of range, a triangle that needs clipping, an extent of more than 1024/256 pixel).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "raster/binning_avx2.h"
+#include "raster/clipping.h"
+#include "raster/triangle_setup.h"
+
+namespace weft::raster {
+namespace {
+
+TEST(BinningAvx2, DecidesEachLaneAsTheScalarBinningDoes) {
+    if (!binning_avx2_supported()) GTEST_SKIP() << "this CPU or build has no AVX2";
+    constexpr int width = 40, height = 30;
+    const PixelRect viewport{0, 0, width, height};
+    std::mt19937 rng(20261127);
+    std::uniform_int_distribution<int> shape(0, 6);
+    std::uniform_int_distribution<std::int64_t> anywhere(-4 * 256, (width + 4) * 256);
+    std::vector<WindowVertex> window;
+    std::vector<std::uint32_t> outcodes;
+    std::vector<TriangleIndices> triangles;
+    // Triangles of every kind binning meets: tiny and small ones anywhere (across the edges of
+    // the viewport too), slivers of zero area, large ones, and large ones whose only covered
+    // centres are a corner's 2×2, with vertices hundreds of pixels away.
+    auto add_vertex = [&](std::int64_t x, std::int64_t y, std::uint32_t outcode) {
+        window.push_back({x, y, 0.5f, 1.0f});
+        outcodes.push_back(outcode);
+        return static_cast<std::uint32_t>(window.size() - 1);
+    };
+    for (int trial = 0; trial < 16000; ++trial) {
+        const std::int64_t x = anywhere(rng), y = anywhere(rng);
+        const int kind = shape(rng);
+        const std::int64_t reach = kind <= 3 ? 300 : kind == 4 ? 500 : 3000;
+        std::uniform_int_distribution<std::int64_t> offset(-reach, reach);
+        std::array<std::uint32_t, 3> corners;
+        if (kind == 6) {
+            // A vertex just inside a corner of the viewport, two 200 pixels outside it along
+            // its sides: inside the viewport it covers at most the corner's 2×2 centres.
+            const bool right = trial % 2 == 1, bottom = trial % 4 >= 2;
+            const std::int64_t inward_x = right ? -1 : 1, inward_y = bottom ? -1 : 1;
+            const std::int64_t cx = right ? width * 256 - 400 : 400;
+            const std::int64_t cy = bottom ? height * 256 - 400 : 400;
+            const std::int64_t far = 200 * 256, near = 128;
+            corners = {add_vertex(cx, cy, 0),
+                       add_vertex(cx - inward_x * far, cy - inward_y * near, 0),
+                       add_vertex(cx - inward_x * near, cy - inward_y * far, 0)};
+        } else {
+            for (int c = 0; c < 3; ++c) {
+                std::uint32_t outcode = 0;
+                if (trial % 97 == 0 && c == 1) outcode = outside_near;  // needs clipping
+                if (trial % 89 == 0) outcode = outside_left;            // all three: culled
+                corners[c] = add_vertex(x + offset(rng), y + offset(rng), outcode);
+            }
+            if (kind == 3) {  // collinear: zero area
+                const WindowVertex a = window[corners[0]], b = window[corners[1]];
+                window[corners[2]] = {2 * b.x - a.x, 2 * b.y - a.y, 0.5f, 1.0f};
+            }
+        }
+        if (trial % 101 == 0) corners[2] = 1u << 30;  // an index out of range
+        triangles.push_back({corners[0], corners[1], corners[2]});
+    }
+
+    int decided_tiny = 0, decided_rows = 0, decided_nothing = 0, undecided = 0, far_corners = 0;
+    BinningGroup group;
+    for (std::size_t first = 0; first + binning_group_size <= triangles.size();
+         first += binning_group_size) {
+        classify_for_binning_avx2(triangles.data() + first,
+                                  static_cast<std::uint32_t>(window.size()), outcodes.data(),
+                                  window.data(), width, height, group);
+        for (int lane = 0; lane < binning_group_size; ++lane) {
+            const TriangleIndices& t = triangles[first + lane];
+            const bool in_range = t[2] < window.size();
+            const TriangleOutcodes codes{outcodes[t[0]], outcodes[t[1]],
+                                         in_range ? outcodes[t[2]] : 0u};
+            if (group.kind[lane] == BinningGroup::undecided) {
+                ++undecided;
+                if (!in_range || codes.needs_clipping()) continue;
+                // Left to the scalar path only for an extent of more than 1024/256 px.
+                std::int64_t extent = 0;
+                for (const auto axis : {&WindowVertex::x, &WindowVertex::y}) {
+                    const std::int64_t values[3] = {window[t[0]].*axis, window[t[1]].*axis,
+                                                    window[t[2]].*axis};
+                    extent = std::max(extent, *std::max_element(values, values + 3) -
+                                                  *std::min_element(values, values + 3));
+                }
+                EXPECT_GT(extent, 1024) << "triangle " << first + lane;
+                BinnedCoverage coverage;
+                bin_coverage(window[t[0]], window[t[1]], window[t[2]], viewport, coverage);
+                if (coverage.tiny) ++far_corners;
+                continue;
+            }
+            ASSERT_TRUE(in_range) << "triangle " << first + lane;
+            ASSERT_FALSE(codes.needs_clipping() && !codes.culled()) << "triangle " << first + lane;
+            BinnedCoverage coverage;
+            if (!codes.culled())
+                bin_coverage(window[t[0]], window[t[1]], window[t[2]], viewport, coverage);
+            if (group.kind[lane] == BinningGroup::draws_nothing) {
+                ++decided_nothing;
+                EXPECT_TRUE(coverage.empty()) << "triangle " << first + lane;
+                continue;
+            }
+            if (group.kind[lane] == BinningGroup::box_rows) {
+                ++decided_rows;
+                EXPECT_FALSE(coverage.tiny) << "triangle " << first + lane;
+                EXPECT_EQ(group.y_begin[lane], coverage.first) << "triangle " << first + lane;
+                EXPECT_EQ(group.y_end[lane] - 1, coverage.last) << "triangle " << first + lane;
+                continue;
+            }
+            ++decided_tiny;
+            ASSERT_TRUE(coverage.tiny) << "triangle " << first + lane;
+            EXPECT_EQ(group.covered[lane], coverage.covered) << "triangle " << first + lane;
+            EXPECT_EQ(group.front_facing[lane] != 0, coverage.front_facing);
+            EXPECT_EQ(group.x_begin[lane], coverage.x_begin);
+            EXPECT_EQ(group.y_begin[lane], coverage.y_begin);
+            const auto inverse_area =
+                static_cast<float>(1.0 / static_cast<double>(group.doubled_area[lane]));
+            for (unsigned left = coverage.covered; left != 0; left &= left - 1) {
+                const int k = std::countr_zero(left);
+                for (int i = 0; i < 3; ++i) {
+                    const float weight =
+                        static_cast<float>(group.edge[k][i][lane] - group.bias[i][lane]) *
+                        inverse_area;
+                    EXPECT_EQ(weight, coverage.weights[k][i]) << "triangle " << first + lane;
+                }
+            }
+        }
+    }
+    // Every kind of lane, many times over.
+    EXPECT_GT(decided_tiny, 1000);
+    EXPECT_GT(decided_rows, 500);
+    EXPECT_GT(decided_nothing, 1000);
+    EXPECT_GT(undecided, 1000);
+    EXPECT_GT(far_corners, 100);
+}
+
+}  // namespace
+}  // namespace weft::raster

@@ -22,10 +22,6 @@ namespace {
 static_assert(sizeof(WindowVertex) == 24 && offsetof(WindowVertex, x) == 0 &&
               offsetof(WindowVertex, y) == 8);
 
-bool detect_avx2() {
-    return __builtin_cpu_supports("avx2");
-}
-
 __m256i gather(const void* base, __m256i index, __m256i mask) {
     return _mm256_mask_i32gather_epi32(_mm256_setzero_si256(), static_cast<const int*>(base), index,
                                        mask, 4);
@@ -36,11 +32,6 @@ __m256i select(__m256i mask, __m256i if_set, __m256i if_clear) {
 }
 
 }  // namespace
-
-bool binning_avx2_supported() {
-    static const bool supported = detect_avx2();
-    return supported;
-}
 
 void classify_for_binning_avx2(const TriangleIndices* triangles, std::uint32_t vertex_count,
                                const std::uint32_t* outcodes, const WindowVertex* window, int width,
@@ -136,6 +127,13 @@ void classify_for_binning_avx2(const TriangleIndices* triangles, std::uint32_t v
     y[1] = y1;
     y[2] = y2;
 
+    // The weights' normalisation, as bin_coverage makes it: 1 / area in double, then rounded
+    // to float (a lane of zero area draws nothing and its weights are never read).
+    const __m256d unit = _mm256_set1_pd(1.0);
+    const __m256 inverse_area = _mm256_set_m128(
+        _mm256_cvtpd_ps(_mm256_div_pd(unit, _mm256_cvtepi32_pd(_mm256_extracti128_si256(area, 1)))),
+        _mm256_cvtpd_ps(_mm256_div_pd(unit, _mm256_cvtepi32_pd(_mm256_castsi256_si128(area)))));
+
     // Edge functions relative to the box's first pixel centre, as detail::EdgeFunction makes
     // them: edge i runs from vertex i + 1 to vertex i + 2.
     const __m256i origin_x = _mm256_add_epi32(_mm256_slli_epi32(x_begin, subpixel_bits), half);
@@ -160,10 +158,12 @@ void classify_for_binning_avx2(const TriangleIndices* triangles, std::uint32_t v
             at_first, _mm256_add_epi32(at_first, step_x), _mm256_add_epi32(at_first, step_y),
             _mm256_add_epi32(_mm256_add_epi32(at_first, step_x), step_y)};
         for (int k = 0; k < tiny_box_side * tiny_box_side; ++k) {
-            _mm256_storeu_si256(reinterpret_cast<__m256i*>(group.edge[k][i]), at[k]);
             outside[k] = _mm256_or_si256(outside[k], at[k]);
+            // The unbiased value over the doubled area, exact in float below 2^24.
+            _mm256_storeu_ps(
+                group.weight[k][i],
+                _mm256_mul_ps(_mm256_cvtepi32_ps(_mm256_sub_epi32(at[k], bias)), inverse_area));
         }
-        _mm256_storeu_si256(reinterpret_cast<__m256i*>(group.bias[i]), bias);
     }
     // A centre is covered where no edge function is negative, inside the box.
     const __m256i wide = _mm256_cmpeq_epi32(columns, two), tall = _mm256_cmpeq_epi32(rows, two);
@@ -195,7 +195,6 @@ void classify_for_binning_avx2(const TriangleIndices* triangles, std::uint32_t v
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(group.x_begin), x_begin);
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(group.y_begin), y_begin);
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(group.y_end), y_end);
-    _mm256_storeu_si256(reinterpret_cast<__m256i*>(group.doubled_area), area);
     for (int lane = 0; lane < binning_group_size; ++lane) {
         group.kind[lane] = static_cast<std::uint8_t>(lanes[0][lane]);
         group.covered[lane] = static_cast<std::uint8_t>(lanes[1][lane]);
@@ -204,10 +203,6 @@ void classify_for_binning_avx2(const TriangleIndices* triangles, std::uint32_t v
 }
 
 #else
-
-bool binning_avx2_supported() {
-    return false;
-}
 
 void classify_for_binning_avx2(const TriangleIndices*, std::uint32_t, const std::uint32_t*,
                                const WindowVertex*, int, int, BinningGroup& group) {

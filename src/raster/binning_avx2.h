@@ -34,19 +34,14 @@ struct BinningGroup {
     std::uint8_t front_facing[binning_group_size];
     std::int32_t x_begin[binning_group_size], y_begin[binning_group_size];
     std::int32_t y_end[binning_group_size];
-    std::int32_t doubled_area[binning_group_size];  // positive: in setup order
-    // The biased edge function i at centre k (first, right, below, diagonal), and edge i's bias:
-    // the same integers as setup_triangle's.
-    std::int32_t edge[tiny_box_side * tiny_box_side][3][binning_group_size];
-    std::int32_t bias[3][binning_group_size];
+    // The weight of setup vertex i at centre k (first, right, below, diagonal) of a tiny
+    // triangle: bin_coverage's, to the bit.
+    float weight[tiny_box_side * tiny_box_side][3][binning_group_size];
 };
-
-// Whether this build has the AVX2 classification and this CPU can run it.
-bool binning_avx2_supported();
 
 // Classifies the eight triangles from `triangles` (of a mesh with `vertex_count` vertices,
 // whose outcodes and window positions are given) inside a viewport width × height pixels of at
-// most 65535 a side. Only where binning_avx2_supported().
+// most 65535 a side. Only where avx2_supported() (vector_isa.h).
 void classify_for_binning_avx2(const TriangleIndices* triangles, std::uint32_t vertex_count,
                                const std::uint32_t* outcodes, const WindowVertex* window, int width,
                                int height, BinningGroup& group);

@@ -35,6 +35,9 @@ class Framebuffer {
     // (vector_isa.h): by default where the CPU runs them; the frame is the same to the byte.
     bool avx512_in_use() const { return avx512_; }
     void use_avx512(bool enabled) { avx512_ = enabled && avx512_supported(); }
+    // The same for the AVX2 build of the lighting, used where AVX-512 is not.
+    bool avx2_in_use() const { return avx2_; }
+    void use_avx2(bool enabled) { avx2_ = enabled && avx2_supported(); }
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -65,6 +68,7 @@ class Framebuffer {
     std::vector<Rgba8> colours_;
     std::vector<float> depths_;
     bool avx512_ = avx512_supported();
+    bool avx2_ = avx2_supported();
 };
 
 }  // namespace weft::raster

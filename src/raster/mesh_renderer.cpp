@@ -14,6 +14,7 @@
 #include "raster/clipping.h"
 #include "raster/surface_shading.h"
 #include "raster/triangle_rasterizer.h"
+#include "raster/vector_isa.h"
 
 namespace weft::raster {
 namespace {
@@ -187,6 +188,7 @@ void draw_prepared_with(Framebuffer& framebuffer, const PreparedMesh& prepared,
     typename Shader::Queue queue;
     PreparedSurface surface = prepare_surface(style, lighting, prepared.eye);
     surface.avx512 = framebuffer.avx512_in_use();
+    surface.avx2 = framebuffer.avx2_in_use();
     const Shader shader{surface, framebuffer.colours().data(), &queue};
     RasterState state;
     state.scissor = bounds;
@@ -341,16 +343,11 @@ void bin_triangle_run(const PreparedMesh& prepared, std::size_t begin, std::size
                     for (int band = band_of(group.y_begin[lane]); band <= last; ++band)
                         lists[band].push_back(static_cast<std::uint32_t>(index + lane));
                 } else if (group.kind[lane] == BinningGroup::tiny) {
-                    // As bin_coverage weighs a covered centre.
-                    const auto inverse_area =
-                        static_cast<float>(1.0 / static_cast<double>(group.doubled_area[lane]));
                     add_fragments(index + lane, group.front_facing[lane] != 0, group.x_begin[lane],
                                   group.y_begin[lane], group.covered[lane],
                                   [&](int k, float(&weight)[3]) {
                                       for (int i = 0; i < 3; ++i)
-                                          weight[i] = static_cast<float>(group.edge[k][i][lane] -
-                                                                         group.bias[i][lane]) *
-                                                      inverse_area;
+                                          weight[i] = group.weight[k][i][lane];
                                   });
                 }
             }
@@ -437,7 +434,7 @@ void bin_triangles(const PreparedMesh& prepared, int band_height, TriangleBands&
     BinningChoice choice;
     choice.with_fragments = prepared.width <= 0xffff && prepared.height <= 0xffff &&
                             triangle_count <= BinnedFragment::front_bit;
-    choice.with_avx2 = allow_avx2 && binning_avx2_supported();
+    choice.with_avx2 = allow_avx2 && avx2_supported();
     if (!threaded) {
         bin_triangle_run(prepared, 0, triangle_count, 0, choice, bands);
         return;

@@ -11,9 +11,11 @@
 
 namespace weft::raster {
 
-// The AVX-512 build (surface_shading_avx512.cpp).
+// The AVX-512 and AVX2 builds (surface_shading_avx512.cpp, surface_shading_avx2.cpp).
 void shade_batch_avx512(const PreparedSurface& surface, const SurfaceBatch& batch,
                         ShadingLanes& lanes, Rgba8* colours);
+void shade_batch_avx2(const PreparedSurface& surface, const SurfaceBatch& batch,
+                      ShadingLanes& lanes, Rgba8* colours);
 
 namespace {
 #include "raster/surface_batch.inl"
@@ -65,6 +67,8 @@ void shade_batch(const PreparedSurface& surface, const SurfaceBatch& batch, Shad
                  Rgba8* colours) {
     if (surface.avx512)
         shade_batch_avx512(surface, batch, lanes, colours);
+    else if (surface.avx2)
+        shade_batch_avx2(surface, batch, lanes, colours);
     else
         shade_batch_body(surface, batch, lanes, colours);
 }

@@ -63,6 +63,7 @@ struct PreparedSurface {
     SurfacePattern pattern = SurfacePattern::none;
     float pattern_frequency = 0.0f, pattern_contrast = 0.0f;
     bool avx512 = false;  // shade_batch lights with the AVX-512 build (vector_isa.h)
+    bool avx2 = false;    // or else with the AVX2 build
 };
 
 PreparedSurface prepare_surface(const SurfaceStyle& style, const Lighting& lighting,

@@ -1,7 +1,7 @@
-// The AVX-512 code of the rasterizer (vector_isa.h: the block traversal of small triangles
-// and the batched lighting) against the baseline build: the truth is the frame the scalar
-// pixel loop and the baseline lighting draw, which must come out the same to the byte —
-// colours and depths — with AVX-512 in use.
+// The AVX-512 and AVX2 code of the rasterizer (vector_isa.h: the block traversal of small
+// triangles and the batched lighting) against the baseline build: the truth is the frame the
+// scalar pixel loop and the baseline lighting draw, which must come out the same to the byte —
+// colours and depths — with AVX-512 or AVX2 in use.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -50,24 +50,28 @@ TriangleMesh crumpled_sheet(int cells, float size, std::uint32_t seed) {
     return mesh;
 }
 
+enum class Isa { avx512, avx2 };
+
 struct Frames {
-    Framebuffer avx512, baseline;
+    Framebuffer vector, baseline;
 };
 
-// The same draw with AVX-512 in use and not.
+// The same draw with AVX-512 (or only AVX2) in use and with neither.
 template <class Draw>
-Frames draw_both_ways(int width, int height, Draw&& draw) {
+Frames draw_both_ways(int width, int height, Isa isa, Draw&& draw) {
     Frames frames{Framebuffer(width, height), Framebuffer(width, height)};
+    frames.vector.use_avx512(isa == Isa::avx512);
     frames.baseline.use_avx512(false);
-    frames.avx512.clear(Rgba8{10, 20, 30, 255});
-    draw(frames.avx512);
+    frames.baseline.use_avx2(false);
+    frames.vector.clear(Rgba8{10, 20, 30, 255});
+    draw(frames.vector);
     frames.baseline.clear(Rgba8{10, 20, 30, 255});
     draw(frames.baseline);
     return frames;
 }
 
 void expect_same(const Frames& frames, const char* what) {
-    const Framebuffer &a = frames.avx512, &b = frames.baseline;
+    const Framebuffer &a = frames.vector, &b = frames.baseline;
     std::size_t covered = 0, differing = 0;
     for (std::size_t i = 0; i < a.depths().size(); ++i) {
         if (b.depths()[i] < 1.0f) ++covered;
@@ -78,8 +82,7 @@ void expect_same(const Frames& frames, const char* what) {
     EXPECT_EQ(differing, 0u) << what << ": pixels that differ between the two builds";
 }
 
-TEST(Avx512, DrawsTheFrameTheBaselineBuildDraws) {
-    if (!avx512_supported()) GTEST_SKIP() << "no AVX-512 on this CPU";
+void expect_each_draw_the_same(Isa isa) {
     // Odd sizes so that blocks hang over the right and bottom edges of the frame, and a
     // sheet larger than the view so that it is cut there.
     const int width = 203, height = 157;
@@ -106,29 +109,29 @@ TEST(Avx512, DrawsTheFrameTheBaselineBuildDraws) {
     // Each varying layout the mesh shader has; two meshes in one frame (blocks and the
     // scalar loop share the shader's queue, and each tests depths the other wrote); and one
     // sheet drawn twice, whose second draw meets depths equal to its own and must fail them.
-    expect_same(draw_both_ways(width, height,
+    expect_same(draw_both_ways(width, height, isa,
                                [&](Framebuffer& frame) {
                                    draw_mesh(frame, camera, small.view(), plain, lighting);
                                }),
                 "plain");
-    expect_same(draw_both_ways(width, height,
+    expect_same(draw_both_ways(width, height, isa,
                                [&](Framebuffer& frame) {
                                    draw_mesh(frame, camera, small.view(), checker, lighting);
                                    draw_mesh(frame, camera, large.view(), checker, lighting);
                                }),
                 "checker, two meshes");
-    expect_same(draw_both_ways(width, height,
+    expect_same(draw_both_ways(width, height, isa,
                                [&](Framebuffer& frame) {
                                    draw_mesh(frame, camera, small.view(), plain, lighting);
                                    draw_mesh(frame, camera, small.view(), checker, lighting);
                                }),
                 "one sheet twice");
-    expect_same(draw_both_ways(width, height,
+    expect_same(draw_both_ways(width, height, isa,
                                [&](Framebuffer& frame) {
                                    draw_mesh(frame, camera, coloured, glossy, lighting);
                                }),
                 "vertex colours, glossy");
-    expect_same(draw_both_ways(width, height,
+    expect_same(draw_both_ways(width, height, isa,
                                [&](Framebuffer& frame) {
                                    draw_mesh(frame, camera, coloured, checker, lighting);
                                }),
@@ -139,13 +142,23 @@ TEST(Avx512, DrawsTheFrameTheBaselineBuildDraws) {
     ASSERT_TRUE(prepare_mesh(camera, width, height, small.view(), checker, prepared));
     TriangleBands bands;
     bin_triangles(prepared, 7, bands);
-    expect_same(draw_both_ways(width, height,
+    expect_same(draw_both_ways(width, height, isa,
                                [&](Framebuffer& frame) {
                                    for (int band = 0; band < bands.band_count; ++band)
                                        draw_prepared_band(frame, prepared, bands, band, checker,
                                                           lighting);
                                }),
                 "bands of 7 rows");
+}
+
+TEST(Avx512, DrawsTheFrameTheBaselineBuildDraws) {
+    if (!avx512_supported()) GTEST_SKIP() << "no AVX-512 on this CPU";
+    expect_each_draw_the_same(Isa::avx512);
+}
+
+TEST(Avx2, DrawsTheFrameTheBaselineBuildDraws) {
+    if (!avx2_supported()) GTEST_SKIP() << "no AVX2 on this CPU";
+    expect_each_draw_the_same(Isa::avx2);
 }
 
 TEST(Avx512, EachFramebufferChoosesWithinWhatTheCpuRuns) {
@@ -156,6 +169,10 @@ TEST(Avx512, EachFramebufferChoosesWithinWhatTheCpuRuns) {
     EXPECT_EQ(second.avx512_in_use(), avx512_supported());  // the other keeps its own
     first.use_avx512(true);
     EXPECT_EQ(first.avx512_in_use(), avx512_supported());  // never past the CPU
+    EXPECT_EQ(first.avx2_in_use(), avx2_supported());
+    first.use_avx2(false);
+    EXPECT_FALSE(first.avx2_in_use());
+    EXPECT_EQ(second.avx2_in_use(), avx2_supported());
 }
 
 }  // namespace

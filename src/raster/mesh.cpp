@@ -14,7 +14,9 @@ glm::vec3 unit_or_zero(const glm::vec3& sum) {
 }
 
 // A triangle's unnormalised normal: twice its area long.
-glm::vec3 face_normal(std::span<const glm::vec3> positions, const TriangleIndices& t) {
+// Always inlined: it runs for every triangle of every frame, and a call costs as much.
+[[gnu::always_inline]] inline glm::vec3 face_normal(std::span<const glm::vec3> positions,
+                                                    const TriangleIndices& t) {
     return glm::cross(positions[t[1]] - positions[t[0]], positions[t[2]] - positions[t[0]]);
 }
 

@@ -20,12 +20,14 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <utility>
 
 #include <glm/vec4.hpp>
 
 #include "raster/pixel_rect.h"
+#include "raster/viewport.h"
 
 namespace weft::raster {
 
@@ -75,8 +77,16 @@ struct WindowVertex {
     float inverse_w = 0.0f;     // 1 / w, for perspective correction
 };
 
-// The position must have w > 0 and lie inside the guard band (see clipping.h).
-WindowVertex window_vertex(const glm::vec4& clip, int viewport_width, int viewport_height);
+// The position must have w > 0 and lie inside the guard band (see clipping.h). Inline: mesh
+// drawing makes one for every vertex of every frame.
+inline WindowVertex window_vertex(const glm::vec4& clip, int viewport_width, int viewport_height) {
+    const glm::vec3 window = clip_to_window(clip, viewport_width, viewport_height);
+    auto snap = [](float coordinate) {
+        return static_cast<std::int64_t>(
+            std::lrint(coordinate * static_cast<float>(subpixel_scale)));
+    };
+    return {snap(window.x), snap(window.y), window.z, 1.0f / clip.w};
+}
 
 namespace detail {
 

@@ -248,7 +248,6 @@ void draw_prepared_triangles(Framebuffer& framebuffer, const PreparedMesh& prepa
     }
 }
 
-// Triangles [begin, end) into the bands they may reach: lists[slice * band_count + band].
 // How binning may go about it.
 struct BinningChoice {
     bool with_fragments = true;  // tiny triangles go in as fragments, else as triangles

@@ -214,10 +214,7 @@ void draw_prepared_with(Framebuffer& framebuffer, const PreparedMesh& prepared,
             draw_prepared_triangle(framebuffer, state, a, b, c, over_w, shader);
         },
         [&](const BinnedFragment& fragment) {
-            const TriangleIndices& t = triangles[fragment.triangle_index()];
-            // Setup order: a front face swaps its second and third vertices.
-            const bool front = fragment.front_facing();
-            const std::uint32_t v0 = t[0], v1 = front ? t[2] : t[1], v2 = front ? t[1] : t[2];
+            const auto [v0, v1, v2] = fragment.setup_vertices(triangles[fragment.triangle_index()]);
             const WindowVertex* const vertex[3] = {window + v0, window + v1, window + v2};
             const float* const over_w[3] = {varyings_over_w + v0 * stride,
                                             varyings_over_w + v1 * stride,
@@ -273,6 +270,10 @@ void bin_triangle_run(const PreparedMesh& prepared, std::size_t begin, std::size
         return std::min(band_shift >= 0 ? row >> band_shift : row / bands.band_height,
                         bands.band_count - 1);
     };
+    auto add_to_bands = [&](std::size_t index, int first, int last) {
+        for (int band = first; band <= last; ++band)
+            lists[band].push_back(static_cast<std::uint32_t>(index));
+    };
     // The pixel centres a tiny triangle covers, each into its row's band.
     auto add_fragments = [&](std::size_t index, bool front_facing, int x_begin, int y_begin,
                              unsigned covered, auto&& weights_at) {
@@ -310,8 +311,7 @@ void bin_triangle_run(const PreparedMesh& prepared, std::size_t begin, std::size
             first = band_of(coverage.first);
             last = band_of(coverage.last);
         }
-        for (int band = first; band <= last; ++band)
-            lists[band].push_back(static_cast<std::uint32_t>(index));
+        add_to_bands(index, first, last);
     };
 
     std::size_t index = begin;
@@ -338,9 +338,8 @@ void bin_triangle_run(const PreparedMesh& prepared, std::size_t begin, std::size
                 if (group.kind[lane] == BinningGroup::undecided) {
                     bin_one(index + lane);
                 } else if (group.kind[lane] == BinningGroup::box_rows) {
-                    const int last = band_of(group.y_end[lane] - 1);
-                    for (int band = band_of(group.y_begin[lane]); band <= last; ++band)
-                        lists[band].push_back(static_cast<std::uint32_t>(index + lane));
+                    add_to_bands(index + lane, band_of(group.y_begin[lane]),
+                                 band_of(group.y_end[lane] - 1));
                 } else if (group.kind[lane] == BinningGroup::tiny) {
                     add_fragments(index + lane, group.front_facing[lane] != 0, group.x_begin[lane],
                                   group.y_begin[lane], group.covered[lane],

@@ -67,12 +67,10 @@ void draw_flat_with(Framebuffer& framebuffer, const PreparedMesh& prepared, Rgba
             draw_prepared_triangle(framebuffer, state, a, b, c, no_varyings, shader);
         },
         [&](const BinnedFragment& fragment) {
-            const TriangleIndices& t = prepared.mesh.triangles[fragment.triangle_index()];
-            // Setup order: a front face swaps its second and third vertices.
-            const bool front = fragment.front_facing();
-            const WindowVertex* const vertex[3] = {&prepared.window[t[0]],
-                                                   &prepared.window[front ? t[2] : t[1]],
-                                                   &prepared.window[front ? t[1] : t[2]]};
+            const auto [v0, v1, v2] =
+                fragment.setup_vertices(prepared.mesh.triangles[fragment.triangle_index()]);
+            const WindowVertex* const vertex[3] = {&prepared.window[v0], &prepared.window[v1],
+                                                   &prepared.window[v2]};
             shade_binned_fragment(framebuffer, state, fragment, vertex, no_varyings, shader);
         });
 }

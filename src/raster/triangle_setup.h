@@ -19,6 +19,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -209,7 +210,7 @@ bool setup_triangle(const glm::vec4& clip0, const glm::vec4& clip1, const glm::v
                     int viewport_width, int viewport_height, const PixelRect& scissor,
                     TriangleSetup& setup);
 
-// Boxes at most this many pixel centres wide and high are tiny: covered_rows decides their
+// Boxes at most this many pixel centres wide and high are tiny: bin_coverage decides their
 // coverage exactly, and the rasterizer shades them without its row walk (traverse_tiny).
 inline constexpr int tiny_box_side = 2;
 
@@ -260,6 +261,10 @@ struct BinnedFragment {
 
     std::uint32_t triangle_index() const { return triangle & ~front_bit; }
     bool front_facing() const { return (triangle & front_bit) != 0; }
+    // The triangle's vertex indices in setup order: a front face swaps its second and third.
+    std::array<std::uint32_t, 3> setup_vertices(const std::array<std::uint32_t, 3>& t) const {
+        return front_facing() ? std::array<std::uint32_t, 3>{t[0], t[2], t[1]} : t;
+    }
 };
 
 // What binning learns of a snapped triangle inside `bounds`: the rows of the pixel centres
@@ -329,18 +334,6 @@ inline void bin_coverage(const WindowVertex& vertex0, const WindowVertex& vertex
         for (int i = 0; i < 3; ++i)
             coverage.weights[k][i] = static_cast<float>(tiny.edges[k][i] - bias[i]) * inverse_area;
     }
-}
-
-// The rows of bin_coverage alone.
-struct CoveredRows {
-    int first = 0, last = -1;  // inclusive
-    bool empty() const { return first > last; }
-};
-inline CoveredRows covered_rows(const WindowVertex& vertex0, const WindowVertex& vertex1,
-                                const WindowVertex& vertex2, const PixelRect& bounds) {
-    BinnedCoverage coverage;
-    bin_coverage(vertex0, vertex1, vertex2, bounds, coverage);
-    return {coverage.first, coverage.last};
 }
 
 }  // namespace weft::raster

@@ -193,7 +193,8 @@ TEST(TriangleRasterizer, TinyTrianglesCoverTheirCentresAndBinIntoTheRowsTheyDraw
                 return raster::window_vertex(testing::window_vertex(fb, p.fx(), p.fy()).position,
                                              fb.width(), fb.height());
             };
-            const CoveredRows rows = covered_rows(window(a), window(b), window(c), fb.bounds());
+            BinnedCoverage rows;
+            bin_coverage(window(a), window(b), window(c), fb.bounds(), rows);
             // How many pixel centres the triangle's extent spans along x and along y (its
             // corners lie at positive coordinates): binning decides exactly up to 2×2, and
             // gives a larger triangle its box's rows.

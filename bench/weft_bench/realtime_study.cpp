@@ -142,8 +142,12 @@ std::string milliseconds_text(double seconds) {
 std::vector<Stepper> steppers_for(const Simulation& start, double explicit_dt, int explicit_steps) {
     std::vector<Stepper> steppers;
     const auto weft_stepper = [&](const std::string& method, const std::string& setting,
-                                  Integrator integrator, int steps_per_frame) {
+                                  Integrator integrator, int steps_per_frame,
+                                  bool single_precision_springs = false) {
         auto run = std::make_shared<Simulation>(start);
+        SimulationOptions options = run->options();
+        options.single_precision_springs = single_precision_springs;
+        run->set_options(options);
         run->set_integrator(integrator);
         run->set_dt(frame / steps_per_frame);
         steppers.push_back({method, setting, frame / steps_per_frame, steps_per_frame,
@@ -158,6 +162,8 @@ std::vector<Stepper> steppers_for(const Simulation& start, double explicit_dt, i
     };
     weft_stepper("weft symplectic Euler", "dt " + milliseconds_text(explicit_dt),
                  Integrator::symplectic_euler, explicit_steps);
+    weft_stepper("weft symplectic Euler (float springs)", "dt " + milliseconds_text(explicit_dt),
+                 Integrator::symplectic_euler, explicit_steps, true);
     for (int steps : {1, 2, 4})
         weft_stepper("weft implicit Euler", "dt 1/" + std::to_string(60 * steps) + " s",
                      Integrator::implicit_euler, steps);
@@ -262,23 +268,31 @@ int run_realtime_study(const RealtimeOptions& options) {
 
         // weft's step against the plain float step, same dt and state, interleaved.
         // (The scene may ask for another integrator: the cloth-like scenes use implicit Euler.)
-        Simulation weft_run = start, weft_single = start;
-        for (Simulation* run : {&weft_run, &weft_single}) {
+        // The same with the spring forces in float (SimulationOptions::single_precision_springs).
+        Simulation weft_run = start, weft_single = start, float_run = start, float_single = start;
+        for (Simulation* run : {&weft_run, &weft_single, &float_run, &float_single}) {
             run->set_integrator(Integrator::symplectic_euler);
             run->set_dt(explicit_dt);
         }
+        SimulationOptions float_springs = float_run.options();
+        float_springs.single_precision_springs = true;
+        for (Simulation* run : {&float_run, &float_single}) run->set_options(float_springs);
         weft_single.set_thread_count(1);
+        float_single.set_thread_count(1);
         PlainFloatCloth plain(cloth, start.force_field());
         const Interleaved versus = interleaved_seconds(
             {[&] { plain.step_symplectic_euler(static_cast<float>(explicit_dt)); },
-             [&] { weft_run.step(); }, [&] { weft_single.step(); }},
+             [&] { weft_run.step(); }, [&] { weft_single.step(); }, [&] { float_run.step(); },
+             [&] { float_single.step(); }},
             5, 0.05);
         std::printf(
             "  drawing 1280x720 shaded: %s; weft's symplectic Euler step / the plain float "
-            "step: %.2f on %d threads, %.2f on 1 (%.1f / %.1f / %.1f us)\n",
+            "step: %.2f on %d threads, %.2f on 1; with float springs %.2f and %.2f (%.1f / %.1f "
+            "/ %.1f / %.1f / %.1f us)\n",
             milliseconds_text(draw).c_str(), versus.ratio_to_first[1], weft_run.thread_count(),
-            versus.ratio_to_first[2], versus.seconds[1] * 1e6, versus.seconds[2] * 1e6,
-            versus.seconds[0] * 1e6);
+            versus.ratio_to_first[2], versus.ratio_to_first[3], versus.ratio_to_first[4],
+            versus.seconds[1] * 1e6, versus.seconds[2] * 1e6, versus.seconds[3] * 1e6,
+            versus.seconds[4] * 1e6, versus.seconds[0] * 1e6);
         const std::string side = std::to_string(n),
                           particles = cell(double(cloth.particle_count())),
                           springs = cell(double(cloth.spring_count()));
@@ -287,8 +301,14 @@ int run_realtime_study(const RealtimeOptions& options) {
                        cell(versus.ratio_to_first[1]), "", "", "", "", "",
                        "ratio of step times on " + std::to_string(weft_run.thread_count()) +
                            " threads; on 1 thread " + cell(versus.ratio_to_first[2])});
+        csv.write_row({side, particles, springs,
+                       "weft symplectic Euler (float springs) / plain float step",
+                       "dt " + cell(explicit_dt), cell(explicit_dt), "", "",
+                       cell(versus.ratio_to_first[3]), "", "", "", "", "",
+                       "ratio of step times on " + std::to_string(float_run.thread_count()) +
+                           " threads; on 1 thread " + cell(versus.ratio_to_first[4])});
 
-        std::printf("  %-22s %-14s %7s %9s %9s %5s %13s %8s\n", "method", "setting", "threads",
+        std::printf("  %-37s %-14s %7s %9s %9s %5s %13s %8s\n", "method", "setting", "threads",
                     "ms/frame", "+drawing", "60fps", "rms error (m)", "stretch");
         PlotSpec plot{std::to_string(n) + "x" + std::to_string(n) +
                           ": cost of a 1/60 s frame against error (" + machine_description() + ")",
@@ -318,7 +338,7 @@ int run_realtime_study(const RealtimeOptions& options) {
                 : outcome.cut_short
                     ? "cut short after " + std::to_string(outcome.frames_run) + " frames"
                     : "ok";
-            std::printf("  %-22s %-14s %7d %9.2f %9.2f %5s %13.3g %7.1f %%%s%s\n",
+            std::printf("  %-37s %-14s %7d %9.2f %9.2f %5s %13.3g %7.1f %%%s%s\n",
                         stepper.method.c_str(), stepper.setting.c_str(), stepper.threads,
                         outcome.seconds_per_frame * 1e3, total * 1e3, fits ? "yes" : "no", error,
                         100.0 * stretch, result == "ok" ? "" : "  ",
@@ -363,9 +383,9 @@ int run_realtime_study(const RealtimeOptions& options) {
                     milliseconds_text(frame - draw).c_str());
         for (const Choice& choice : choices) {
             if (choice.cheapest.empty())
-                std::printf("    %-22s none fits\n", choice.method.c_str());
+                std::printf("    %-37s none fits\n", choice.method.c_str());
             else
-                std::printf("    %-22s cheapest that fits: %s; most accurate that fits: %s\n",
+                std::printf("    %-37s cheapest that fits: %s; most accurate that fits: %s\n",
                             choice.method.c_str(), choice.cheapest.c_str(),
                             choice.most_accurate.empty() ? "(no error measured)"
                                                          : choice.most_accurate.c_str());

@@ -108,13 +108,14 @@ check "nothing was written for refused input" test ! -e "$work/x"
 expect 0 quiet -- realtime "$scenes/large_rubber_sheet.toml" --sizes 8 --duration 0.05 --out "$work/rt"
 csv=$work/rt/realtime.csv
 check "realtime CSV header" grep -q '^particles_per_side,particles,springs,method,setting,dt_s,' "$csv"
-# The weft-to-plain ratio, 1 + 3 + 4 + 1 method settings, the reference and a summary per
-# method.
-check "ratio + 9 settings + reference + 4 summaries" test "$(tail -n +2 "$csv" | wc -l)" -eq 15
+# The two weft-to-plain ratios (double and float springs), 1 + 1 + 3 + 4 + 1 method settings,
+# the reference and a summary per method.
+check "2 ratios + 10 settings + reference + 5 summaries" \
+  test "$(tail -n +2 "$csv" | wc -l)" -eq 18
 check "every row has every column" awk -F, 'NR == 1 { n = NF } NF != n { exit 1 }' "$csv"
 check "four XPBD substep counts" test "$(grep -c ',XPBD float,[0-9]* substeps,' "$csv")" -eq 4
 check "every setting ran to the end on the small sheet" \
-  test "$(grep -c ',ok$' "$csv")" -eq 9
+  test "$(grep -c ',ok$' "$csv")" -eq 10
 check "the output states the weft-to-plain-float ratio" grep -q 'the plain float step: [0-9.]* on' "$work/out"
 check "realtime plot" test -s "$work/rt/realtime_8.png"
 

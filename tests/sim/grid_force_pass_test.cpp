@@ -19,14 +19,7 @@ namespace weft {
 namespace {
 
 Scene grid_scene(int rows, int cols) {
-    Scene scene;
-    scene.cloth.rows = rows;
-    scene.cloth.cols = cols;
-    scene.cloth.spacing = 0.03;
-    scene.structural = {true, 800.0, 0.5};
-    scene.shear = {true, 400.0, 0.3};
-    scene.bend = {true, 100.0, 0.1};
-    return scene;
+    return testing::three_family_scene(rows, cols, 0.03);
 }
 
 using testing::same_bits;

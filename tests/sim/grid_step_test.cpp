@@ -27,14 +27,7 @@ namespace {
 // Big enough for the rows to be split between threads (4096 particles or more), an odd row
 // count, all three families, its top corners pinned.
 Cloth loaded_sheet() {
-    Scene scene;
-    scene.cloth.rows = 71;
-    scene.cloth.cols = 64;
-    scene.cloth.spacing = 0.02;
-    scene.structural = {true, 800.0, 0.5};
-    scene.shear = {true, 400.0, 0.3};
-    scene.bend = {true, 100.0, 0.1};
-    Cloth cloth = build_grid_cloth(scene);
+    Cloth cloth = testing::three_family_sheet(71, 64);
     testing::scramble(cloth, 21, 0.005);
     for (std::uint32_t p : cloth.topology().pinned)
         cloth.velocities[p] = Vec3(0.0);                                      // pins stay put

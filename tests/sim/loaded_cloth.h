@@ -6,10 +6,30 @@
 #include <random>
 #include <vector>
 
+#include "sim/build/cloth_builder.h"
 #include "sim/core/cloth.h"
 #include "sim/core/force_pass.h"
+#include "sim/scene/scene.h"
 
 namespace weft::testing {
+
+// A rows × cols sheet `spacing` (m) apart with all three spring families, stiff and damped,
+// its top corners pinned.
+inline Scene three_family_scene(int rows, int cols, double spacing) {
+    Scene scene;
+    scene.cloth.rows = rows;
+    scene.cloth.cols = cols;
+    scene.cloth.spacing = spacing;
+    scene.structural = {true, 800.0, 0.5};
+    scene.shear = {true, 400.0, 0.3};
+    scene.bend = {true, 100.0, 0.1};
+    return scene;
+}
+
+// That sheet 0.02 m apart, built, at rest.
+inline Cloth three_family_sheet(int rows, int cols) {
+    return build_grid_cloth(three_family_scene(rows, cols, 0.02));
+}
 
 // Moves every particle up to `jitter` (m) per axis from where it is and gives it a random
 // velocity of up to 1 m/s per axis.

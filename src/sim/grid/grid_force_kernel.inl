@@ -17,8 +17,16 @@
 // u = d / l, t = k (l - L) + c ((v_j - v_i)·u), F = t u, except that u is d times 1/l (an ulp
 // apart) and each particle's spring forces are summed in another order: the two passes agree
 // to rounding (tested), and this one agrees with itself bit for bit however rows are split.
+//
+// The spring forces and their sums are of type Real: double, or float for the fused step's
+// single-precision forces (Job::single_precision_springs). In float the differences of the
+// ends' positions and velocities are still taken in double and only then rounded, so a
+// spring's length keeps float's relative precision (about 6e-8 of the length) wherever the
+// sheet is, rather than float's precision of a coordinate a metre from the origin; the state
+// and the update stay in double. With Real = double every operation is the one it always was.
 
-inline double* ring_row(double* base, std::size_t row_stride, int row) {
+template <class T>
+T* ring_row(T* base, std::size_t row_stride, int row) {
     return base + static_cast<std::size_t>(row % 3) * row_stride;
 }
 
@@ -34,11 +42,19 @@ void load_state_row(const Job& job, int row, double* state_ring, std::size_t pad
     deinterleave(v, slot + 3 * padded, slot + 4 * padded, slot + 5 * padded, cols);
 }
 
+// A spring pushes along its length when l² is above this: any positive double; in float,
+// above the least normal float, so that 1/l² is finite.
+template <class Real>
+constexpr Real shortest_length_squared = std::is_same_v<Real, float>
+                                             ? std::numeric_limits<float>::min()
+                                             : Real(0);
+
 // Spring forces of the springs of direction `direction` that start on row `row`, into
 // out[0..3][padded) (padding and columns without a spring left at zero).
+template <class Real>
 void spring_row(const Job& job, const Direction& direction, int row, double* state_ring,
-                std::size_t padded, double* __restrict out_x, double* __restrict out_y,
-                double* __restrict out_z) {
+                std::size_t padded, Real* __restrict out_x, Real* __restrict out_y,
+                Real* __restrict out_z) {
     const int cols = job.cols;
     const int other_row = row + direction.row_step;
     const int dc = direction.col_step;
@@ -49,8 +65,8 @@ void spring_row(const Job& job, const Direction& direction, int row, double* sta
     const auto zero_from =
         static_cast<std::size_t>(c_end > c_begin ? c_end : c_begin) + row_padding;
     for (std::size_t c = 0; c < static_cast<std::size_t>(c_begin) + row_padding; ++c)
-        out_x[c] = out_y[c] = out_z[c] = 0.0;
-    for (std::size_t c = zero_from; c < padded; ++c) out_x[c] = out_y[c] = out_z[c] = 0.0;
+        out_x[c] = out_y[c] = out_z[c] = Real(0);
+    for (std::size_t c = zero_from; c < padded; ++c) out_x[c] = out_y[c] = out_z[c] = Real(0);
     if (c_begin >= c_end) return;
     const double* a = ring_row(state_ring, 6 * padded, row) + row_padding;
     const double* b = ring_row(state_ring, 6 * padded, other_row) + row_padding + dc;
@@ -68,31 +84,42 @@ void spring_row(const Job& job, const Direction& direction, int row, double* sta
     const double* __restrict wb = b + 5 * padded;
     const std::size_t first = static_cast<std::size_t>(row) * static_cast<std::size_t>(cols);
     const double* __restrict rest = direction.rest_lengths + first;
-    const double k = direction.stiffness;
-    const double damping = direction.damping;
-    double* __restrict fx = out_x + row_padding;
-    double* __restrict fy = out_y + row_padding;
-    double* __restrict fz = out_z + row_padding;
+    const auto k = static_cast<Real>(direction.stiffness);
+    const auto damping = static_cast<Real>(direction.damping);
+    Real* __restrict fx = out_x + row_padding;
+    Real* __restrict fy = out_y + row_padding;
+    Real* __restrict fz = out_z + row_padding;
     for (int c = c_begin; c < c_end; ++c) {
-        const double dx = xb[c] - xa[c], dy = yb[c] - ya[c], dz = zb[c] - za[c];
-        const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
+        const auto dx = static_cast<Real>(xb[c] - xa[c]), dy = static_cast<Real>(yb[c] - ya[c]),
+                   dz = static_cast<Real>(zb[c] - za[c]);
+        const auto rest_length = static_cast<Real>(rest[c]);
+        const Real length_squared = dx * dx + dy * dy + dz * dz;
+        const Real length = std::sqrt(length_squared);
         // A dead spring, or coincident ends (no direction to push along): no force. Written
         // without a branch so the loop vectorises: `none` is exactly 0 or 1, so for an acting
-        // spring the divisor is l and the mask the live factor, to the last bit, and a masked
-        // lane divides by 1 and never makes a NaN of its own.
-        const double none = length > 0.0 ? 0.0 : 1.0;
-        const double live = rest[c] >= 0.0 ? 1.0 : 0.0;
-        const double mask = live * (1.0 - none);
+        // spring the divisor is l (or l²) and the mask the live factor, to the last bit, and a
+        // masked lane divides by 1 and never makes a NaN of its own. (l > 0 exactly when
+        // l² > 0: the square root of a positive number is positive.) In float, a spring
+        // shorter than about 1e-19 m counts as coincident ends, so that 1/l² stays finite.
+        const Real none = length_squared > shortest_length_squared<Real> ? Real(0) : Real(1);
+        const Real live = rest_length >= Real(0) ? Real(1) : Real(0);
+        const Real mask = live * (Real(1) - none);
         // u = d · (1/l): one division instead of three. The divider is this loop's
         // bottleneck (with the square root); u differs from the general pass's d / l by at
-        // most an ulp per component.
-        const double inverse_length = 1.0 / (length + none);
-        const double ux = dx * inverse_length, uy = dy * inverse_length, uz = dz * inverse_length;
+        // most an ulp per component. In float, 1/l is l · (1/l²) (another ulp or so), so the
+        // division need not wait for the square root.
+        Real inverse_length;
+        if constexpr (std::is_same_v<Real, float>)
+            inverse_length = length * (Real(1) / (length_squared + none));
+        else
+            inverse_length = Real(1) / (length + none);
+        const Real ux = dx * inverse_length, uy = dy * inverse_length, uz = dz * inverse_length;
         // Hooke's law plus a dashpot on the rate of change of length, (v_j - v_i) · u.
-        const double tension =
-            k * (length - rest[c]) +
-            damping * ((ub[c] - ua[c]) * ux + (vb[c] - va[c]) * uy + (wb[c] - wa[c]) * uz);
-        const double masked_tension = mask * tension;
+        const Real tension =
+            k * (length - rest_length) + damping * (static_cast<Real>(ub[c] - ua[c]) * ux +
+                                                    static_cast<Real>(vb[c] - va[c]) * uy +
+                                                    static_cast<Real>(wb[c] - wa[c]) * uz);
+        const Real masked_tension = mask * tension;
         fx[c] = masked_tension * ux;
         fy[c] = masked_tension * uy;
         fz[c] = masked_tension * uz;
@@ -103,26 +130,28 @@ void spring_row(const Job& job, const Direction& direction, int row, double* sta
 //     sum = m g [- drag (v - wind)] + F_0 + ... + F_5 - G_0 - ... - G_5
 // with F_k the springs of direction k starting at each particle and G_k those ending there
 // (a row of zeros for a direction the cloth does not have: adding 0 changes nothing).
-template <bool WithDrag>
-void gather_row(double* __restrict sum, const double* __restrict mass,
+// The external force is taken in double and rounded once to Real.
+template <bool WithDrag, class Real>
+void gather_row(Real* __restrict sum, const double* __restrict mass,
                 const double* __restrict velocity, double gravity, double drag, double wind,
-                const double* const (&starting)[max_directions],
-                const double* const (&ending)[max_directions], std::size_t count) {
-    const double* __restrict f0 = starting[0];
-    const double* __restrict f1 = starting[1];
-    const double* __restrict f2 = starting[2];
-    const double* __restrict f3 = starting[3];
-    const double* __restrict f4 = starting[4];
-    const double* __restrict f5 = starting[5];
-    const double* __restrict g0 = ending[0];
-    const double* __restrict g1 = ending[1];
-    const double* __restrict g2 = ending[2];
-    const double* __restrict g3 = ending[3];
-    const double* __restrict g4 = ending[4];
-    const double* __restrict g5 = ending[5];
+                const Real* const (&starting)[max_directions],
+                const Real* const (&ending)[max_directions], std::size_t count) {
+    const Real* __restrict f0 = starting[0];
+    const Real* __restrict f1 = starting[1];
+    const Real* __restrict f2 = starting[2];
+    const Real* __restrict f3 = starting[3];
+    const Real* __restrict f4 = starting[4];
+    const Real* __restrict f5 = starting[5];
+    const Real* __restrict g0 = ending[0];
+    const Real* __restrict g1 = ending[1];
+    const Real* __restrict g2 = ending[2];
+    const Real* __restrict g3 = ending[3];
+    const Real* __restrict g4 = ending[4];
+    const Real* __restrict g5 = ending[5];
     for (std::size_t c = 0; c < count; ++c) {
-        double total = mass[c] * gravity;  // exactly m g without drag, as the general pass
-        if constexpr (WithDrag) total = total - drag * (velocity[c] - wind);
+        double external = mass[c] * gravity;  // exactly m g without drag, as the general pass
+        if constexpr (WithDrag) external = external - drag * (velocity[c] - wind);
+        auto total = static_cast<Real>(external);
         total += f0[c];
         total += f1[c];
         total += f2[c];
@@ -139,8 +168,9 @@ void gather_row(double* __restrict sum, const double* __restrict mass,
     }
 }
 
-void store_forces(const double* __restrict sum_x, const double* __restrict sum_y,
-                  const double* __restrict sum_z, double* __restrict f, std::size_t count) {
+template <class Real>
+void store_forces(const Real* __restrict sum_x, const Real* __restrict sum_y,
+                  const Real* __restrict sum_z, double* __restrict f, std::size_t count) {
     for (std::size_t c = 0; c < count; ++c) {
         f[3 * c] = sum_x[c];
         f[3 * c + 1] = sum_y[c];
@@ -153,8 +183,9 @@ void store_forces(const double* __restrict sum_x, const double* __restrict sum_y
 // in the same operations, in the same order, as step_symplectic_euler's loop over Vec3, so
 // the fused step and the separate one give the same bits. `state` is the row's slot in the
 // state ring (x, y, z, then the velocity's three components, `padded` apart).
-void advance_row(const double* __restrict sum_x, const double* __restrict sum_y,
-                 const double* __restrict sum_z, const double* state, std::size_t padded,
+template <class Real>
+void advance_row(const Real* __restrict sum_x, const Real* __restrict sum_y,
+                 const Real* __restrict sum_z, const double* state, std::size_t padded,
                  const double* __restrict inverse_mass, double dt, double* __restrict next_x,
                  double* __restrict next_v, std::size_t count) {
     const double* __restrict x = state;
@@ -165,9 +196,9 @@ void advance_row(const double* __restrict sum_x, const double* __restrict sum_y,
     const double* __restrict w = state + 5 * padded;
     for (std::size_t c = 0; c < count; ++c) {
         const double scale = dt * inverse_mass[c];  // s/kg
-        const double vx = u[c] + scale * sum_x[c];
-        const double vy = v[c] + scale * sum_y[c];
-        const double vz = w[c] + scale * sum_z[c];
+        const double vx = u[c] + scale * static_cast<double>(sum_x[c]);
+        const double vy = v[c] + scale * static_cast<double>(sum_y[c]);
+        const double vz = w[c] + scale * static_cast<double>(sum_z[c]);
         next_v[3 * c] = vx;
         next_v[3 * c + 1] = vy;
         next_v[3 * c + 2] = vz;
@@ -181,16 +212,20 @@ void sweep_particles(const double* __restrict x, const double* __restrict refere
                      const double* __restrict v, std::size_t count, double limit_squared,
                      bool& non_finite, bool& moved);
 
-SweepFlags force_rows(const Job& job, int row_begin, int row_end, double* scratch) {
+template <class Real>
+SweepFlags force_rows_of(const Job& job, int row_begin, int row_end, double* scratch) {
     SweepFlags flags;
     const std::size_t padded = static_cast<std::size_t>(job.cols + 2 * row_padding);
     const std::size_t cols = static_cast<std::size_t>(job.cols);
-    double* state_ring = scratch;                    // 3 rows × 6 components
-    double* spring_ring = scratch + 3 * 6 * padded;  // 3 rows × directions × 3 components
+    double* state_ring = scratch;  // 3 rows × 6 components
+    // 3 rows × directions × 3 components; in float, the doubles' room holds them with some
+    // to spare (Real is never wider than double).
+    static_assert(sizeof(Real) <= sizeof(double));
+    Real* spring_ring = reinterpret_cast<Real*>(scratch + 3 * 6 * padded);
     const std::size_t spring_row_stride = static_cast<std::size_t>(max_directions) * 3 * padded;
-    double* sum_rows = spring_ring + 3 * spring_row_stride;  // 3 components of one row
-    double* zero_row = sum_rows + 3 * padded;                // stays all zeros
-    for (std::size_t c = 0; c < padded; ++c) zero_row[c] = 0.0;
+    Real* sum_rows = spring_ring + 3 * spring_row_stride;  // 3 components of one row
+    Real* zero_row = sum_rows + 3 * padded;                // stays all zeros
+    for (std::size_t c = 0; c < padded; ++c) zero_row[c] = Real(0);
     auto spring_force = [&](int row, int k, int component) {
         return ring_row(spring_ring, spring_row_stride, row) +
                (static_cast<std::size_t>(k) * 3 + static_cast<std::size_t>(component)) * padded;
@@ -212,10 +247,10 @@ SweepFlags force_rows(const Job& job, int row_begin, int row_end, double* scratc
         // starting here, minus those ending here; then one interleaved store.
         const double* state = ring_row(state_ring, 6 * padded, row) + row_padding;
         const double* mass = job.masses + static_cast<std::size_t>(row) * cols;
-        double* sum[3] = {sum_rows, sum_rows + padded, sum_rows + 2 * padded};
+        Real* sum[3] = {sum_rows, sum_rows + padded, sum_rows + 2 * padded};
         for (int a = 0; a < 3; ++a) {
-            const double* starting[max_directions];
-            const double* ending[max_directions];
+            const Real* starting[max_directions];
+            const Real* ending[max_directions];
             for (int k = 0; k < max_directions; ++k) {
                 starting[k] = ending[k] = zero_row;
                 if (k >= job.direction_count) continue;
@@ -252,6 +287,11 @@ SweepFlags force_rows(const Job& job, int row_begin, int row_end, double* scratc
         }
     }
     return flags;
+}
+
+SweepFlags force_rows(const Job& job, int row_begin, int row_end, double* scratch) {
+    return job.single_precision_springs ? force_rows_of<float>(job, row_begin, row_end, scratch)
+                                        : force_rows_of<double>(job, row_begin, row_end, scratch);
 }
 
 // Runs body(a, b, rest, c_begin, c_end) for every direction's springs that start on each of

@@ -121,7 +121,7 @@ bool step_grid_symplectic_euler(Cloth& cloth, const ForceField& field, double dt
                                 std::vector<Vec3>& next_positions,
                                 std::vector<Vec3>& next_velocities, const SweepRequest* sweep,
                                 ParticleSweep* sweep_result, WorkerPool* pool, SimdLevel level,
-                                const RowsSteppedWork* after_rows) {
+                                const RowsSteppedWork* after_rows, bool single_precision_springs) {
     if (!field.colliders.empty()) return false;
     grid_kernel::Job job;
     if (!grid_stencil_usable(cloth) || !describe_stencil(cloth, cloth.positions, job)) return false;
@@ -134,6 +134,7 @@ bool step_grid_symplectic_euler(Cloth& cloth, const ForceField& field, double dt
     job.inverse_masses = cloth.topology().inverse_masses.data();
     job.next_positions = &next_positions.data()->x;
     job.next_velocities = &next_velocities.data()->x;
+    job.single_precision_springs = single_precision_springs;
     if (sweep) {
         job.reference_positions = &sweep->reference_positions->x;
         job.moved_limit_squared = sweep->limit_squared;

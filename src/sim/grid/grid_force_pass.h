@@ -60,6 +60,10 @@ struct SweepRequest {
 //
 // Whether a step is fused is the caller's choice (SimulationOptions::fused_grid_steps: tests
 // and benchmarks compare the two).
+//
+// With `single_precision_springs`, the spring forces and their sums are computed in float
+// (grid_kernel::Job::single_precision_springs): no longer the force pass's bits, but still the
+// same bits for any thread count and kernel build.
 struct RowsSteppedWork {
     void (*run)(void* context, std::size_t begin, std::size_t end) = nullptr;
     void* context = nullptr;
@@ -68,7 +72,8 @@ bool step_grid_symplectic_euler(Cloth& cloth, const ForceField& field, double dt
                                 std::vector<Vec3>& next_positions,
                                 std::vector<Vec3>& next_velocities, const SweepRequest* sweep,
                                 ParticleSweep* sweep_result, WorkerPool* pool, SimdLevel level,
-                                const RowsSteppedWork* after_rows = nullptr);
+                                const RowsSteppedWork* after_rows = nullptr,
+                                bool single_precision_springs = false);
 
 // The divergence guard's stretch test over the stencil: whether some live spring may be
 // longer than `ratio` rest lengths, by |d|² > ratio² (1 - 1e-9) L² — a superset of the exact

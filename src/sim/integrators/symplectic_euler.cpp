@@ -12,7 +12,8 @@ bool step_symplectic_euler_fused(Cloth& cloth, const ForceField& field, double d
         !step_grid_symplectic_euler(
             cloth, field, dt, work.scratch.next_positions, work.scratch.next_velocities,
             work.on_the_way.sweep_request ? &*work.on_the_way.sweep_request : nullptr, &sweep,
-            work.settings.pool, work.settings.options.kernel_build, after_rows))
+            work.settings.pool, work.settings.options.kernel_build, after_rows,
+            work.settings.options.single_precision_springs))
         return false;
     ++work.statistics.force_evaluations;
     if (work.on_the_way.sweep_request) work.on_the_way.sweep_result = sweep;

@@ -15,6 +15,7 @@
 #include "raster/surface_shading.h"
 #include "raster/triangle_rasterizer.h"
 #include "raster/vector_isa.h"
+#include "raster/vertex_transform_avx2.h"
 
 namespace weft::raster {
 namespace {
@@ -132,24 +133,39 @@ void vertex_varyings(const PreparedMesh& prepared, std::size_t i, float* varying
 // divided by w (what the rasterizer interpolates). Vertices [begin, end). The varyings
 // themselves are not kept: only a triangle that needs clipping uses them, and it computes
 // them again (clip_vertex below) — writing them for every vertex was a third of this pass.
+// With `with_avx2`, the positions of whole groups of eight vertices go through
+// transform_positions_avx2 (the same bits), then their varyings here.
 template <bool HasUv, bool HasColour>
 void transform_vertices(const glm::mat4& view_projection, PreparedMesh& prepared, std::size_t begin,
-                        std::size_t end) {
+                        std::size_t end, bool with_avx2) {
     constexpr int varying_count = SurfaceShader<HasUv, HasColour>::varying_count;
     const glm::mat4 clip_from_model = view_projection * prepared.mesh.model;
-    for (std::size_t i = begin; i < end; ++i) {
+    // What setup would compute for each corner of the vertex's triangles, once.
+    const auto divide_varyings = [&](std::size_t i, float inverse_w) {
+        float varyings[varying_count];
+        vertex_varyings<HasUv, HasColour>(prepared, i, varyings);
+        float* over_w = prepared.varyings_over_w.data() + i * varying_count;
+        for (int k = 0; k < varying_count; ++k) over_w[k] = varyings[k] * inverse_w;
+    };
+    std::size_t i = begin;
+    if (with_avx2) {
+        const std::size_t groups = (end - begin) / transform_group_size;
+        transform_positions_avx2(clip_from_model, prepared.mesh.positions.data(), begin, groups,
+                                 prepared.width, prepared.height, prepared.clip.data(),
+                                 prepared.outcodes.data(), prepared.window.data());
+        for (const std::size_t stepped = begin + groups * transform_group_size; i < stepped; ++i)
+            if ((prepared.outcodes[i] & clipping_planes) == 0)
+                divide_varyings(i, prepared.window[i].inverse_w);
+    }
+    for (; i < end; ++i) {
         const glm::vec4 clip = clip_from_model * glm::vec4(prepared.mesh.positions[i], 1.0f);
         prepared.clip[i] = clip;
         const std::uint32_t outcode = clip_outcode(clip);
         prepared.outcodes[i] = outcode;
-        // What setup would compute for this corner of each of its triangles, once.
         if ((outcode & clipping_planes) == 0) {
-            float varyings[varying_count];
-            vertex_varyings<HasUv, HasColour>(prepared, i, varyings);
             const WindowVertex window = window_vertex(clip, prepared.width, prepared.height);
             prepared.window[i] = window;
-            float* over_w = prepared.varyings_over_w.data() + i * varying_count;
-            for (int k = 0; k < varying_count; ++k) over_w[k] = varyings[k] * window.inverse_w;
+            divide_varyings(i, window.inverse_w);
         }
     }
 }
@@ -357,7 +373,8 @@ void bin_triangle_run(const PreparedMesh& prepared, std::size_t begin, std::size
 }  // namespace
 
 bool prepare_mesh(const Camera& camera, int width, int height, const MeshView& mesh,
-                  const SurfaceStyle& style, PreparedMesh& prepared, WorkerPool* pool) {
+                  const SurfaceStyle& style, PreparedMesh& prepared, WorkerPool* pool,
+                  bool allow_avx2) {
     const std::size_t count = mesh.positions.size();
     if (mesh.normals.size() != count) return false;
     if (!mesh.uvs.empty() && mesh.uvs.size() != count) return false;
@@ -380,15 +397,17 @@ bool prepare_mesh(const Camera& camera, int width, int height, const MeshView& m
                                                  : SurfaceShader<false, false>::varying_count);
     prepared.varyings_over_w.resize(count * static_cast<std::size_t>(prepared.varying_stride));
     const glm::mat4 view_projection = view_projection_matrix(camera, width, height);
+    const bool with_avx2 = allow_avx2 && avx2_supported() && width <= largest_avx2_viewport_side &&
+                           height <= largest_avx2_viewport_side;
     auto transform = [&](std::size_t begin, std::size_t end) {
         if (prepared.with_uv && prepared.with_colour)
-            transform_vertices<true, true>(view_projection, prepared, begin, end);
+            transform_vertices<true, true>(view_projection, prepared, begin, end, with_avx2);
         else if (prepared.with_uv)
-            transform_vertices<true, false>(view_projection, prepared, begin, end);
+            transform_vertices<true, false>(view_projection, prepared, begin, end, with_avx2);
         else if (prepared.with_colour)
-            transform_vertices<false, true>(view_projection, prepared, begin, end);
+            transform_vertices<false, true>(view_projection, prepared, begin, end, with_avx2);
         else
-            transform_vertices<false, false>(view_projection, prepared, begin, end);
+            transform_vertices<false, false>(view_projection, prepared, begin, end, with_avx2);
     };
     // Each vertex is written by one slice: the same values for any split.
     constexpr std::size_t min_vertices_for_threads = 4096;

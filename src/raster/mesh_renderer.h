@@ -93,8 +93,11 @@ struct PreparedMesh {
 
 // Transforms the mesh as draw_mesh does, splitting the vertices between the pool's threads
 // when there is one. False (and nothing prepared) when draw_mesh would refuse the mesh.
+// `allow_avx2`: the positions go through vertex_transform_avx2.h where the CPU runs it (the
+// same bits; false for the tests that compare).
 bool prepare_mesh(const Camera& camera, int width, int height, const MeshView& mesh,
-                  const SurfaceStyle& style, PreparedMesh& prepared, WorkerPool* pool = nullptr);
+                  const SurfaceStyle& style, PreparedMesh& prepared, WorkerPool* pool = nullptr,
+                  bool allow_avx2 = true);
 
 // Draws a prepared mesh inside `scissor`: exactly the pixels draw_mesh would draw there.
 // Triangles whose vertices all lie more than a pixel above or below the scissor are

@@ -7,7 +7,8 @@
 // multiply-add — so a frame is the same to the byte either way (tested). Each Framebuffer says
 // whether drawing into it uses them (Framebuffer::use_avx512, use_avx2); nothing in the
 // process chooses for it. Binning's classification of triangles (binning_avx2.h) is integer
-// work with one answer, and runs wherever AVX2 does.
+// work with one answer, and the vertex transform's positions (vertex_transform_avx2.h) are
+// the scalar operations in lanes: both run wherever AVX2 does.
 #pragma once
 
 namespace weft::raster {

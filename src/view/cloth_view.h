@@ -9,6 +9,7 @@
 
 #include "parallel/worker_pool.h"
 #include "raster/colour.h"
+#include "raster/grid_normals.h"
 #include "raster/mesh.h"
 #include "raster/mesh_renderer.h"
 #include "sim/core/cloth.h"
@@ -70,6 +71,9 @@ class ClothView {
     std::vector<std::uint32_t> shadow_vertices_;             // the particles they name
     raster::VertexTriangles triangles_around_;  // of intact_triangles_, for the normals
     std::vector<glm::vec3> face_normals_;       // one per intact triangle
+    // While the triangles are the whole grid, the normals come from its rows instead.
+    bool whole_grid_ = false;
+    raster::GridNormals grid_normals_;
     std::vector<raster::LineIndices> wireframe_edges_;
     std::vector<raster::Rgba8> particle_colours_;
     std::vector<raster::LineIndices> spring_lines_;

@@ -71,8 +71,9 @@ constexpr StudyHelp studies[] = {
     {"realtime",
      "  weft-bench realtime [SCENE.toml] [--set K=V]... [--out DIR] [--sizes N,N,...]\n"
      "                      [--duration SECONDS] [--max-run-seconds SECONDS]\n",
-     "Each method at the 60 fps frame budget: weft's symplectic and implicit Euler, XPBD with\n"
-     "substeps and a plain float step; cost per frame, error, stretch (default scene:\n"
+     "Each method at the 60 fps frame budget: weft's symplectic Euler (also with its spring\n"
+     "forces in float) and implicit Euler, XPBD with substeps and a plain float step; cost per\n"
+     "frame, error, stretch (default scene:\n"
      "cloth_128.toml if there is one, else large_rubber_sheet.toml).\n"
      "  --sizes N,N,...     particles per side (3 to 4096, default 32,64,128,256)\n"
      "  --duration SECONDS  simulated time of each run (default 0.5)\n"

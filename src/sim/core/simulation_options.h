@@ -14,9 +14,10 @@ struct SimulationOptions {
     // never make a round trip through memory (grid_force_pass.h); the same bits as the force
     // pass followed by the update loop.
     bool fused_grid_steps = true;
-    // The fused step above computes its spring forces in float, the state and the update
-    // staying in double (grid_force_pass.h): about twice as fast, with an error far below
-    // the method's own (tested). Off by default, so a scene's run is the double step's bits.
+    // With this, the fused step above computes its spring forces in float, the state and the
+    // update staying in double (grid_force_pass.h): eight springs a vector instead of four,
+    // with an error far below the method's own (tested). Off by default, so a scene's run is
+    // the double step's bits.
     bool single_precision_springs = false;
     // Implicit Euler on a plain grid takes the structured single-precision solve
     // (implicit_grid_solve.h); off, the general double-precision path, the reference for the

@@ -32,12 +32,19 @@ __m256i select(__m256i mask, __m256i if_set, __m256i if_clear) {
     return _mm256_blendv_epi8(if_clear, if_set, mask);
 }
 
+// The eight triangles whose corners' outcodes and window positions (in 1/256 pixel) are in
+// the lanes of code[c], x[c] and y[c]; `valid`: the lanes whose indices are in range.
+// Always inlined into both callers, so the corners stay in registers.
+[[gnu::always_inline]] inline void classify_lanes(__m256i valid, const __m256i (&code)[3],
+                                                  __m256i (&x)[3], __m256i (&y)[3], int width,
+                                                  int height, BinningGroup& group);
+
 }  // namespace
 
 void classify_for_binning_avx2(const TriangleIndices* triangles, std::uint32_t vertex_count,
                                const std::uint32_t* outcodes, const WindowVertex* window, int width,
                                int height, BinningGroup& group) {
-    const __m256i ones = _mm256_set1_epi32(-1), zero = _mm256_setzero_si256();
+    const __m256i ones = _mm256_set1_epi32(-1);
     // Vertex indices, checked against the vertex count (an unsigned comparison).
     constexpr std::uint32_t largest_gathered = 0x7fffffffu / 6;
     if (vertex_count == 0 || vertex_count > largest_gathered) {
@@ -67,12 +74,64 @@ void classify_for_binning_avx2(const TriangleIndices* triangles, std::uint32_t v
             valid, _mm256_cmpeq_epi32(_mm256_min_epu32(vertex[c], last_vertex), vertex[c]));
     }
 
+    const __m256i code[3] = {gather(outcodes, vertex[0], valid), gather(outcodes, vertex[1], valid),
+                             gather(outcodes, vertex[2], valid)};
+    // Window positions, in 1/256 pixel: the low halves of WindowVertex's x and y.
+    __m256i x[3], y[3];
+    for (int c = 0; c < 3; ++c) {
+        const __m256i at = _mm256_mullo_epi32(vertex[c], _mm256_set1_epi32(6));
+        x[c] = gather(window, at, valid);
+        y[c] = gather(window, _mm256_add_epi32(at, _mm256_set1_epi32(2)), valid);
+    }
+    classify_lanes(valid, code, x, y, width, height, group);
+}
+
+namespace {
+
+// Five consecutive values from `at` in lanes 0-4 (the lanes above are never read: masked,
+// so nothing past the array's end is touched).
+__m256i load_five(const std::int32_t* at) {
+    return _mm256_maskload_epi32(at, _mm256_setr_epi32(-1, -1, -1, -1, -1, 0, 0, 0));
+}
+
+// The three corners' values of a group of four whole-grid cells from the rows above (top)
+// and below (bottom) them, each holding columns c0 … c0 + 4 in lanes 0-4. Lane 2j is cell j's
+// first triangle (top left, bottom left, top right), lane 2j + 1 its second (top right,
+// bottom left, bottom right).
+void grid_corners(__m256i top, __m256i bottom, __m256i (&corner)[3]) {
+    corner[0] = _mm256_permutevar8x32_epi32(top, _mm256_setr_epi32(0, 1, 1, 2, 2, 3, 3, 4));
+    corner[1] = _mm256_permutevar8x32_epi32(bottom, _mm256_setr_epi32(0, 0, 1, 1, 2, 2, 3, 3));
+    const __m256i right = _mm256_setr_epi32(1, 1, 2, 2, 3, 3, 4, 4);
+    corner[2] = _mm256_blend_epi32(_mm256_permutevar8x32_epi32(top, right),
+                                   _mm256_permutevar8x32_epi32(bottom, right), 0b10101010);
+}
+
+}  // namespace
+
+void classify_grid_group_avx2(std::size_t first_triangle, int grid_cols,
+                              const std::uint32_t* outcodes, const std::int32_t* snapped_x,
+                              const std::int32_t* snapped_y, int width, int height,
+                              BinningGroup& group) {
+    const auto cols = static_cast<std::size_t>(grid_cols);
+    const std::size_t cell = first_triangle / 2;
+    const std::size_t top_left = cell / (cols - 1) * cols + cell % (cols - 1);
+    const std::size_t bottom_left = top_left + cols;
+    __m256i code[3], x[3], y[3];
+    grid_corners(load_five(reinterpret_cast<const std::int32_t*>(outcodes + top_left)),
+                 load_five(reinterpret_cast<const std::int32_t*>(outcodes + bottom_left)), code);
+    grid_corners(load_five(snapped_x + top_left), load_five(snapped_x + bottom_left), x);
+    grid_corners(load_five(snapped_y + top_left), load_five(snapped_y + bottom_left), y);
+    classify_lanes(_mm256_set1_epi32(-1), code, x, y, width, height, group);
+}
+
+namespace {
+
+inline void classify_lanes(__m256i valid, const __m256i (&code)[3], __m256i (&x)[3],
+                           __m256i (&y)[3], int width, int height, BinningGroup& group) {
+    const __m256i ones = _mm256_set1_epi32(-1), zero = _mm256_setzero_si256();
     // Cull and clip, as TriangleOutcodes decides them.
-    const __m256i code0 = gather(outcodes, vertex[0], valid),
-                  code1 = gather(outcodes, vertex[1], valid),
-                  code2 = gather(outcodes, vertex[2], valid);
-    const __m256i all = _mm256_and_si256(_mm256_and_si256(code0, code1), code2);
-    const __m256i any = _mm256_or_si256(_mm256_or_si256(code0, code1), code2);
+    const __m256i all = _mm256_and_si256(_mm256_and_si256(code[0], code[1]), code[2]);
+    const __m256i any = _mm256_or_si256(_mm256_or_si256(code[0], code[1]), code[2]);
     auto has = [&](__m256i bits, std::uint32_t planes) {
         return _mm256_xor_si256(
             _mm256_cmpeq_epi32(_mm256_and_si256(bits, _mm256_set1_epi32(static_cast<int>(planes))),
@@ -81,14 +140,6 @@ void classify_for_binning_avx2(const TriangleIndices* triangles, std::uint32_t v
     };
     const __m256i culled = _mm256_or_si256(has(all, frustum_planes), has(any, not_finite));
     const __m256i clipped = has(any, clipping_planes);
-
-    // Window positions, in 1/256 pixel.
-    __m256i x[3], y[3];
-    for (int c = 0; c < 3; ++c) {
-        const __m256i at = _mm256_mullo_epi32(vertex[c], _mm256_set1_epi32(6));
-        x[c] = gather(window, at, valid);
-        y[c] = gather(window, _mm256_add_epi32(at, _mm256_set1_epi32(2)), valid);
-    }
 
     // The box of pixel centres inside the viewport (detail::covered_box).
     const __m256i half = _mm256_set1_epi32(static_cast<int>(subpixel_scale / 2));
@@ -214,10 +265,18 @@ void classify_for_binning_avx2(const TriangleIndices* triangles, std::uint32_t v
     }
 }
 
+}  // namespace
+
 #else
 
 void classify_for_binning_avx2(const TriangleIndices*, std::uint32_t, const std::uint32_t*,
                                const WindowVertex*, int, int, BinningGroup& group) {
+    for (int lane = 0; lane < binning_group_size; ++lane)
+        group.kind[lane] = BinningGroup::undecided;
+}
+
+void classify_grid_group_avx2(std::size_t, int, const std::uint32_t*, const std::int32_t*,
+                              const std::int32_t*, int, int, BinningGroup& group) {
     for (int lane = 0; lane < binning_group_size; ++lane)
         group.kind[lane] = BinningGroup::undecided;
 }

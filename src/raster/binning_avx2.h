@@ -12,6 +12,7 @@
 // pixel) is left to the scalar path: it says so, and nothing else.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include "raster/mesh.h"
@@ -45,5 +46,23 @@ struct BinningGroup {
 void classify_for_binning_avx2(const TriangleIndices* triangles, std::uint32_t vertex_count,
                                const std::uint32_t* outcodes, const WindowVertex* window, int width,
                                int height, BinningGroup& group);
+
+// A mesh that is a whole grid (grid_normals.h) needs no gathers: the group of its triangles
+// [first_triangle, first_triangle + 8) is four cells of one row when first_triangle is even
+// and the row has four cells from there. Then its corners are five consecutive vertices of
+// two rows, loaded and put in place by permutations.
+inline bool grid_group_fits(std::size_t first_triangle, int grid_cols) {
+    if (grid_cols < 2 || first_triangle % 2 != 0) return false;
+    const auto cells_per_row = static_cast<std::size_t>(grid_cols - 1);
+    return (first_triangle / 2) % cells_per_row + binning_group_size / 2 <= cells_per_row;
+}
+
+// classify_for_binning_avx2 for such a group of a grid grid_cols vertices wide, from the
+// vertices' outcodes and the x and y of their window positions (in 1/256 pixel, the low
+// halves of WindowVertex's, one array each): the same group, lane for lane.
+void classify_grid_group_avx2(std::size_t first_triangle, int grid_cols,
+                              const std::uint32_t* outcodes, const std::int32_t* snapped_x,
+                              const std::int32_t* snapped_y, int width, int height,
+                              BinningGroup& group);
 
 }  // namespace weft::raster

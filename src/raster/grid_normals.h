@@ -22,6 +22,7 @@ class GridNormals {
   public:
     void resize(int rows, int cols);
     int rows() const { return rows_; }
+    int cols() const { return cols_; }
 
     // Takes particles [begin, end)'s positions (the mesh's, in row order).
     void load_positions(std::span<const glm::vec3> positions, std::size_t begin, std::size_t end);

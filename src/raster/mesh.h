@@ -28,6 +28,10 @@ struct MeshView {
     std::span<const glm::vec3> colours = {};     // optional, one per position: replaces the
                                                  // style's front and back colours (strain map)
     glm::mat4 model{1.0f};                       // model → world
+    // When above 1: the triangles are exactly the whole grid of grid_normals.h, of
+    // positions.size() / grid_cols rows of grid_cols vertices (its maker checks it:
+    // is_whole_grid), which lets binning load a group's corners instead of gathering them.
+    int grid_cols = 0;
 };
 
 struct TriangleMesh {

@@ -147,15 +147,22 @@ void transform_vertices(const glm::mat4& view_projection, PreparedMesh& prepared
         float* over_w = prepared.varyings_over_w.data() + i * varying_count;
         for (int k = 0; k < varying_count; ++k) over_w[k] = varyings[k] * inverse_w;
     };
+    const auto keep_snapped = [&](std::size_t i, const WindowVertex& window) {
+        prepared.snapped_x[i] = static_cast<std::int32_t>(window.x);
+        prepared.snapped_y[i] = static_cast<std::int32_t>(window.y);
+    };
     std::size_t i = begin;
     if (with_avx2) {
         const std::size_t groups = (end - begin) / transform_group_size;
         transform_positions_avx2(clip_from_model, prepared.mesh.positions.data(), begin, groups,
                                  prepared.width, prepared.height, prepared.clip.data(),
                                  prepared.outcodes.data(), prepared.window.data());
-        for (const std::size_t stepped = begin + groups * transform_group_size; i < stepped; ++i)
-            if ((prepared.outcodes[i] & clipping_planes) == 0)
+        for (const std::size_t stepped = begin + groups * transform_group_size; i < stepped; ++i) {
+            if ((prepared.outcodes[i] & clipping_planes) == 0) {
+                keep_snapped(i, prepared.window[i]);
                 divide_varyings(i, prepared.window[i].inverse_w);
+            }
+        }
     }
     for (; i < end; ++i) {
         const glm::vec4 clip = clip_from_model * glm::vec4(prepared.mesh.positions[i], 1.0f);
@@ -165,6 +172,7 @@ void transform_vertices(const glm::mat4& view_projection, PreparedMesh& prepared
         if ((outcode & clipping_planes) == 0) {
             const WindowVertex window = window_vertex(clip, prepared.width, prepared.height);
             prepared.window[i] = window;
+            keep_snapped(i, window);
             divide_varyings(i, window.inverse_w);
         }
     }
@@ -344,8 +352,13 @@ void bin_triangle_run(const PreparedMesh& prepared, std::size_t begin, std::size
                 for (int lane = 0; lane < binning_group_size; ++lane) bin_one(index + lane);
                 continue;
             }
-            classify_for_binning_avx2(triangles + index, static_cast<std::uint32_t>(count),
-                                      outcodes, window, prepared.width, prepared.height, group);
+            if (grid_group_fits(index, prepared.mesh.grid_cols))
+                classify_grid_group_avx2(index, prepared.mesh.grid_cols, outcodes,
+                                         prepared.snapped_x.data(), prepared.snapped_y.data(),
+                                         prepared.width, prepared.height, group);
+            else
+                classify_for_binning_avx2(triangles + index, static_cast<std::uint32_t>(count),
+                                          outcodes, window, prepared.width, prepared.height, group);
             int undecided = 0;
             for (int lane = 0; lane < binning_group_size; ++lane)
                 undecided += group.kind[lane] == BinningGroup::undecided ? 1 : 0;
@@ -385,6 +398,14 @@ bool prepare_mesh(const Camera& camera, int width, int height, const MeshView& m
     prepared.clip.resize(count);
     prepared.outcodes.resize(count);
     prepared.window.resize(count);
+    prepared.snapped_x.resize(count);
+    prepared.snapped_y.resize(count);
+    // A grid hint that cannot be right is dropped (the full check is its maker's).
+    if (mesh.grid_cols > 1 &&
+        (count % static_cast<std::size_t>(mesh.grid_cols) != 0 ||
+         mesh.triangles.size() != 2 * (count / static_cast<std::size_t>(mesh.grid_cols) - 1) *
+                                      static_cast<std::size_t>(mesh.grid_cols - 1)))
+        prepared.mesh.grid_cols = 0;
     prepared.width = width;
     prepared.height = height;
     prepared.eye = camera.position;

@@ -82,6 +82,9 @@ struct PreparedMesh {
     std::vector<std::uint32_t> outcodes;
     // Each vertex through the divide, viewport and snap (meaningless where it needs clipping).
     std::vector<WindowVertex> window;
+    // The x and y of each window vertex, on their own (32 bits hold them inside the guard
+    // band): what binning reads of a whole grid (binning_avx2.h). Written where `window` is.
+    std::vector<std::int32_t> snapped_x, snapped_y;
     // Each vertex's varyings divided by its w, varying_stride of them per vertex, as the
     // rasterizer interpolates them (meaningless where it needs clipping).
     std::vector<float> varyings_over_w;

@@ -145,7 +145,13 @@ std::span<const raster::Rgba8> ClothView::particle_colours(const Cloth& cloth) {
 }
 
 raster::MeshView ClothView::mesh() const {
-    return {positions_, normals_, intact_triangles_, uvs_, {}, glm::mat4(1.0f)};
+    return {positions_,
+            normals_,
+            intact_triangles_,
+            uvs_,
+            {},
+            glm::mat4(1.0f),
+            whole_grid_ ? grid_normals_.cols() : 0};
 }
 
 raster::MeshView ClothView::shadow_caster() const {

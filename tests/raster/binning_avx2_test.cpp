@@ -6,12 +6,15 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <random>
 #include <vector>
 
 #include "raster/binning_avx2.h"
+#include "raster/camera.h"
 #include "raster/clipping.h"
+#include "raster/mesh_renderer.h"
 #include "raster/triangle_setup.h"
 #include "raster/vector_isa.h"
 
@@ -135,6 +138,87 @@ TEST(BinningAvx2, DecidesEachLaneAsTheScalarBinningDoes) {
     EXPECT_GT(decided_nothing, 1000);
     EXPECT_GT(undecided, 1000);
     EXPECT_GT(far_corners, 100);
+}
+
+// A whole grid's groups classified from loaded corners (classify_grid_group_avx2) against the
+// same groups gathered: lane for lane, the same kind and, where the lane says, the same box,
+// coverage, facing and weights. A fine wavy sheet seen whole (tiny triangles), close up
+// (larger ones, some cut by the near plane) and partly off screen; a sheet 7 columns wide,
+// whose rows of 6 cells leave groups that do not fit.
+TEST(BinningAvx2, LoadsAWholeGridsCornersAsItGathersThem) {
+    if (!avx2_supported()) GTEST_SKIP() << "this CPU or build has no AVX2";
+    const int width = 320, height = 200;
+    std::size_t compared = 0, tiny = 0, rows = 0, undecided = 0, unfit = 0;
+    for (const int cols : {97, 7}) {
+        const int grid_rows = 61;
+        TriangleMesh sheet;
+        for (int r = 0; r < grid_rows; ++r) {
+            for (int c = 0; c < cols; ++c) {
+                const float u = static_cast<float>(c) / 96.0f, v = static_cast<float>(r) / 60.0f;
+                sheet.positions.push_back(
+                    {u - 0.5f, 0.1f * std::sin(9.0f * u) * std::cos(7.0f * v), v - 0.5f});
+                sheet.normals.push_back({0.0f, 1.0f, 0.0f});
+                sheet.uvs.push_back({u, v});
+            }
+        }
+        for (int r = 0; r + 1 < grid_rows; ++r) {
+            for (int c = 0; c + 1 < cols; ++c) {
+                const auto top_left = static_cast<std::uint32_t>(r * cols + c);
+                const auto bottom_left = top_left + static_cast<std::uint32_t>(cols);
+                sheet.triangles.push_back({top_left, bottom_left, top_left + 1});
+                sheet.triangles.push_back({top_left + 1, bottom_left, bottom_left + 1});
+            }
+        }
+        MeshView view = sheet.view();
+        view.grid_cols = cols;
+        const Camera cameras[] = {make_camera({0.2f, 2.5f, 1.5f}, {0.0f, 0.0f, 0.0f}, 50.0f),
+                                  make_camera({0.05f, 0.12f, 0.1f}, {0.0f, 0.0f, -0.3f}, 70.0f),
+                                  make_camera({0.9f, 0.6f, 0.9f}, {0.4f, 0.0f, 0.3f}, 40.0f)};
+        for (const Camera& camera : cameras) {
+            PreparedMesh prepared;
+            ASSERT_TRUE(prepare_mesh(camera, width, height, view, SurfaceStyle{}, prepared));
+            ASSERT_EQ(prepared.mesh.grid_cols, cols);
+            const auto count = static_cast<std::uint32_t>(prepared.clip.size());
+            for (std::size_t first = 0; first + binning_group_size <= sheet.triangles.size();
+                 first += binning_group_size) {
+                if (!grid_group_fits(first, cols)) {
+                    ++unfit;
+                    continue;
+                }
+                BinningGroup loaded, gathered;
+                classify_grid_group_avx2(first, cols, prepared.outcodes.data(),
+                                         prepared.snapped_x.data(), prepared.snapped_y.data(),
+                                         width, height, loaded);
+                classify_for_binning_avx2(sheet.triangles.data() + first, count,
+                                          prepared.outcodes.data(), prepared.window.data(), width,
+                                          height, gathered);
+                for (int lane = 0; lane < binning_group_size; ++lane) {
+                    ++compared;
+                    ASSERT_EQ(loaded.kind[lane], gathered.kind[lane]) << first + lane;
+                    if (gathered.kind[lane] == BinningGroup::undecided) ++undecided;
+                    if (gathered.kind[lane] == BinningGroup::box_rows) {
+                        ++rows;
+                        EXPECT_EQ(loaded.y_begin[lane], gathered.y_begin[lane]) << first + lane;
+                        EXPECT_EQ(loaded.y_end[lane], gathered.y_end[lane]) << first + lane;
+                    }
+                    if (gathered.kind[lane] != BinningGroup::tiny) continue;
+                    ++tiny;
+                    EXPECT_EQ(loaded.covered[lane], gathered.covered[lane]) << first + lane;
+                    EXPECT_EQ(loaded.front_facing[lane], gathered.front_facing[lane]);
+                    EXPECT_EQ(loaded.x_begin[lane], gathered.x_begin[lane]) << first + lane;
+                    EXPECT_EQ(loaded.y_begin[lane], gathered.y_begin[lane]) << first + lane;
+                    for (int k = 0; k < tiny_box_side * tiny_box_side; ++k)
+                        for (int i = 0; i < 3; ++i)
+                            EXPECT_EQ(loaded.weight[k][i][lane], gathered.weight[k][i][lane]);
+                }
+            }
+        }
+    }
+    EXPECT_GT(compared, 20000u);
+    EXPECT_GT(tiny, 3000u);
+    EXPECT_GT(rows, 1000u);
+    EXPECT_GT(undecided, 100u);
+    EXPECT_GT(unfit, 50u);
 }
 
 }  // namespace

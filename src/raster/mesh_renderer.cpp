@@ -147,7 +147,10 @@ void transform_vertices(const glm::mat4& view_projection, PreparedMesh& prepared
         float* over_w = prepared.varyings_over_w.data() + i * varying_count;
         for (int k = 0; k < varying_count; ++k) over_w[k] = varyings[k] * inverse_w;
     };
+    // Only a whole grid's binning reads them (PreparedMesh::snapped_x).
+    const bool whole_grid = prepared.mesh.grid_cols > 1;
     const auto keep_snapped = [&](std::size_t i, const WindowVertex& window) {
+        if (!whole_grid) return;
         prepared.snapped_x[i] = static_cast<std::int32_t>(window.x);
         prepared.snapped_y[i] = static_cast<std::int32_t>(window.y);
     };
@@ -398,14 +401,15 @@ bool prepare_mesh(const Camera& camera, int width, int height, const MeshView& m
     prepared.clip.resize(count);
     prepared.outcodes.resize(count);
     prepared.window.resize(count);
-    prepared.snapped_x.resize(count);
-    prepared.snapped_y.resize(count);
     // A grid hint that cannot be right is dropped (the full check is its maker's).
     if (mesh.grid_cols > 1 &&
         (count % static_cast<std::size_t>(mesh.grid_cols) != 0 ||
          mesh.triangles.size() != 2 * (count / static_cast<std::size_t>(mesh.grid_cols) - 1) *
                                       static_cast<std::size_t>(mesh.grid_cols - 1)))
         prepared.mesh.grid_cols = 0;
+    const std::size_t snapped = prepared.mesh.grid_cols > 1 ? count : 0;
+    prepared.snapped_x.resize(snapped);
+    prepared.snapped_y.resize(snapped);
     prepared.width = width;
     prepared.height = height;
     prepared.eye = camera.position;

@@ -83,7 +83,8 @@ struct PreparedMesh {
     // Each vertex through the divide, viewport and snap (meaningless where it needs clipping).
     std::vector<WindowVertex> window;
     // The x and y of each window vertex, on their own (32 bits hold them inside the guard
-    // band): what binning reads of a whole grid (binning_avx2.h). Written where `window` is.
+    // band): what binning reads of a whole grid (binning_avx2.h). Written where `window` is,
+    // for a mesh marked as a whole grid (MeshView::grid_cols); empty for any other.
     std::vector<std::int32_t> snapped_x, snapped_y;
     // Each vertex's varyings divided by its w, varying_stride of them per vertex, as the
     // rasterizer interpolates them (meaningless where it needs clipping).

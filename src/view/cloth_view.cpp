@@ -82,12 +82,12 @@ void ClothView::rebuild_topology(const Cloth& cloth) {
                           shadow_vertices_);
     wireframe_edges_ = raster::unique_edges(intact_triangles_);
     raster::find_vertex_triangles(intact_triangles_, positions_.size(), triangles_around_);
-    face_normals_.resize(intact_triangles_.size());
     whole_grid_ = !cloth.mesh_rest_shape &&
                   static_cast<std::size_t>(cloth.rows) * static_cast<std::size_t>(cloth.cols) ==
                       positions_.size() &&
                   raster::is_whole_grid(intact_triangles_, cloth.rows, cloth.cols);
     if (whole_grid_) grid_normals_.resize(cloth.rows, cloth.cols);
+    face_normals_.resize(whole_grid_ ? 0 : intact_triangles_.size());
     lone_springs_ = find_lone_springs(cloth, uvs_, intact_triangles_, triangles_around_);
 }
 
@@ -106,8 +106,6 @@ void ClothView::update(const Cloth& cloth, WorkerPool* pool) {
     auto gather_normals = [&](std::size_t begin, std::size_t end) {
         raster::gather_vertex_normals(face_normals_, triangles_around_, normals_, begin, end);
     };
-    const std::size_t count = positions_.size();
-    constexpr std::size_t min_vertices_for_threads = 4096;
     // The whole grid's passes go by rows: cell rows for the faces, vertex rows for the sums.
     auto find_grid_faces = [&](std::size_t begin, std::size_t end) {
         grid_normals_.find_faces(begin, end);
@@ -115,25 +113,20 @@ void ClothView::update(const Cloth& cloth, WorkerPool* pool) {
     auto gather_grid_normals = [&](std::size_t begin, std::size_t end) {
         grid_normals_.gather(normals_, begin, end);
     };
-    const auto rows = static_cast<std::size_t>(grid_normals_.rows());
-    if (pool && pool->thread_count() > 1 && count >= min_vertices_for_threads) {
-        pool->parallel_for(count, copy_positions);
-        if (whole_grid_) {
-            pool->parallel_for(rows - 1, find_grid_faces);
-            pool->parallel_for(rows, gather_grid_normals);
-        } else {
-            pool->parallel_for(intact_triangles_.size(), find_faces);
-            pool->parallel_for(count, gather_normals);
-        }
+    const std::size_t count = positions_.size();
+    constexpr std::size_t min_vertices_for_threads = 4096;
+    const bool worth_threads = count >= min_vertices_for_threads;
+    auto run = [&](std::size_t items, auto&& pass) {
+        parallel_for_if(pool, worth_threads, items, pass);
+    };
+    run(count, copy_positions);
+    if (whole_grid_) {
+        const auto rows = static_cast<std::size_t>(grid_normals_.rows());
+        run(rows - 1, find_grid_faces);
+        run(rows, gather_grid_normals);
     } else {
-        copy_positions(0, count);
-        if (whole_grid_) {
-            find_grid_faces(0, rows - 1);
-            gather_grid_normals(0, rows);
-        } else {
-            find_faces(0, intact_triangles_.size());
-            gather_normals(0, count);
-        }
+        run(intact_triangles_.size(), find_faces);
+        run(count, gather_normals);
     }
 }
 

@@ -17,6 +17,7 @@
 #include "raster/mesh_renderer.h"
 #include "raster/triangle_setup.h"
 #include "raster/vector_isa.h"
+#include "raster_test_support.h"
 
 namespace weft::raster {
 namespace {
@@ -161,14 +162,7 @@ TEST(BinningAvx2, LoadsAWholeGridsCornersAsItGathersThem) {
                 sheet.uvs.push_back({u, v});
             }
         }
-        for (int r = 0; r + 1 < grid_rows; ++r) {
-            for (int c = 0; c + 1 < cols; ++c) {
-                const auto top_left = static_cast<std::uint32_t>(r * cols + c);
-                const auto bottom_left = top_left + static_cast<std::uint32_t>(cols);
-                sheet.triangles.push_back({top_left, bottom_left, top_left + 1});
-                sheet.triangles.push_back({top_left + 1, bottom_left, bottom_left + 1});
-            }
-        }
+        sheet.triangles = testing::whole_grid_triangles(grid_rows, cols);
         MeshView view = sheet.view();
         view.grid_cols = cols;
         const Camera cameras[] = {make_camera({0.2f, 2.5f, 1.5f}, {0.0f, 0.0f, 0.0f}, 50.0f),

@@ -10,22 +10,12 @@
 
 #include "raster/grid_normals.h"
 #include "raster/mesh.h"
+#include "raster_test_support.h"
 
 namespace weft::raster {
 namespace {
 
-std::vector<TriangleIndices> grid_triangles(int rows, int cols) {
-    std::vector<TriangleIndices> triangles;
-    for (int r = 0; r + 1 < rows; ++r) {
-        for (int c = 0; c + 1 < cols; ++c) {
-            const auto top_left = static_cast<std::uint32_t>(r * cols + c);
-            const auto bottom_left = top_left + static_cast<std::uint32_t>(cols);
-            triangles.push_back({top_left, bottom_left, top_left + 1});
-            triangles.push_back({top_left + 1, bottom_left, bottom_left + 1});
-        }
-    }
-    return triangles;
-}
+using testing::whole_grid_triangles;
 
 std::vector<glm::vec3> general_normals(const std::vector<glm::vec3>& positions,
                                        const std::vector<TriangleIndices>& triangles) {
@@ -58,7 +48,7 @@ TEST(GridNormals, GiveTheGeneralPassesBits) {
     std::uniform_real_distribution<float> jitter(-0.02f, 0.02f);
     int cases = 0;
     for (const auto& [rows, cols] : {std::pair{2, 2}, {2, 7}, {6, 2}, {3, 3}, {17, 13}, {40, 41}}) {
-        const std::vector<TriangleIndices> triangles = grid_triangles(rows, cols);
+        const std::vector<TriangleIndices> triangles = whole_grid_triangles(rows, cols);
         ASSERT_TRUE(is_whole_grid(triangles, rows, cols));
         for (int shape = 0; shape < 4; ++shape) {
             std::vector<glm::vec3> positions;
@@ -86,7 +76,7 @@ TEST(GridNormals, GiveTheGeneralPassesBits) {
 }
 
 TEST(GridNormals, OnlyAWholeGridInOrderIsOne) {
-    std::vector<TriangleIndices> triangles = grid_triangles(4, 5);
+    std::vector<TriangleIndices> triangles = whole_grid_triangles(4, 5);
     EXPECT_TRUE(is_whole_grid(triangles, 4, 5));
     EXPECT_FALSE(is_whole_grid(triangles, 5, 4));
     EXPECT_FALSE(is_whole_grid(triangles, 1, 20));

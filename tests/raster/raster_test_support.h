@@ -123,6 +123,22 @@ inline TriangleMesh spiral_sheet(int cells) {
     return sheet;
 }
 
+// The triangles of a whole grid of rows × cols vertices in the cloth builder's order and
+// split (grid_normals.h): cell by cell, (top left, bottom left, top right) then (top right,
+// bottom left, bottom right).
+inline std::vector<TriangleIndices> whole_grid_triangles(int rows, int cols) {
+    std::vector<TriangleIndices> triangles;
+    for (int r = 0; r + 1 < rows; ++r) {
+        for (int c = 0; c + 1 < cols; ++c) {
+            const auto top_left = static_cast<std::uint32_t>(r * cols + c);
+            const auto bottom_left = top_left + static_cast<std::uint32_t>(cols);
+            triangles.push_back({top_left, bottom_left, top_left + 1});
+            triangles.push_back({top_left + 1, bottom_left, bottom_left + 1});
+        }
+    }
+    return triangles;
+}
+
 // Whether two frames of one size hold the same colours and the same depths, to the byte.
 inline bool same_frame(const Framebuffer& a, const Framebuffer& b) {
     return std::equal(a.colours().begin(), a.colours().end(), b.colours().begin()) &&

@@ -12,6 +12,7 @@
 
 #include "raster/binning_avx2.h"
 #include "raster/clipping.h"
+#include "raster/fragment_varyings_avx2.h"
 #include "raster/surface_shading.h"
 #include "raster/triangle_rasterizer.h"
 #include "raster/vector_isa.h"
@@ -76,6 +77,25 @@ struct SurfaceShader {
         // All sixteen of the block's slots, whatever the count: no loop to mispredict.
         std::fill_n(q.front + q.count, fragment_block_size, front_facing ? 1.0f : 0.0f);
         q.count += count;
+        if (q.count == ShadingLanes::capacity) flush();  // defer() needs a free slot
+    }
+
+    // Binned fragments that passed their depth test, their varyings interpolated eight at a
+    // time (fragment_varyings_avx2.h): queued as defer() would have queued them one by one.
+    void defer_group(const FragmentGroup& group, const float* varyings_over_w) const
+        requires(varying_count == grouped_varying_count) {
+        Queue& q = *queue;
+        if (q.count > ShadingLanes::capacity - fragment_group_size) flush();
+        float* const out[grouped_varying_count] = {
+            q.varyings[0] + q.count, q.varyings[1] + q.count, q.varyings[2] + q.count,
+            q.varyings[3] + q.count, q.varyings[4] + q.count, q.varyings[5] + q.count,
+            q.varyings[6] + q.count, q.varyings[7] + q.count};
+        interpolate_fragment_varyings_avx2(varyings_over_w, group, out);
+        for (int j = 0; j < group.count; ++j) {
+            q.pixel[q.count + j] = group.pixel[j];
+            q.front[q.count + j] = group.front[j];
+        }
+        q.count += group.count;
         if (q.count == ShadingLanes::capacity) flush();  // defer() needs a free slot
     }
 
@@ -219,8 +239,21 @@ void draw_prepared_with(Framebuffer& framebuffer, const PreparedMesh& prepared,
     const Shader shader{surface, framebuffer.colours().data(), &queue};
     RasterState state;
     state.scissor = bounds;
+    // Binned fragments are depth-tested one by one, in order, and their varyings interpolated
+    // in groups of eight where the lanes hold a vertex's varyings; a group goes into the
+    // queue before anything drawn after its fragments, so the queue's order is unchanged.
+    constexpr bool groups_fit = Shader::varying_count == grouped_varying_count;
+    const bool grouped = groups_fit && surface.avx2;
+    FragmentGroup group;
+    const auto queue_group = [&] {
+        if constexpr (groups_fit) {
+            if (group.count > 0) shader.defer_group(group, varyings_over_w);
+            group.count = 0;
+        }
+    };
     for_each_triangle(
         [&](std::size_t index) {
+            queue_group();
             const TriangleIndices& t = triangles[index];
             if (t[0] >= count || t[1] >= count || t[2] >= count) return;
             const TriangleOutcodes codes{outcodes[t[0]], outcodes[t[1]], outcodes[t[2]]};
@@ -243,11 +276,27 @@ void draw_prepared_with(Framebuffer& framebuffer, const PreparedMesh& prepared,
         [&](const BinnedFragment& fragment) {
             const auto [v0, v1, v2] = fragment.setup_vertices(triangles[fragment.triangle_index()]);
             const WindowVertex* const vertex[3] = {window + v0, window + v1, window + v2};
+            if (grouped) {
+                const BinnedFragmentDepth tested =
+                    test_binned_fragment_depth(framebuffer, state, fragment, vertex);
+                if (!tested.passed) return;
+                const int j = group.count++;
+                group.pixel[j] = static_cast<std::uint32_t>(tested.index);
+                group.front[j] = fragment.front_facing() ? 1.0f : 0.0f;
+                group.vertex[j][0] = v0;
+                group.vertex[j][1] = v1;
+                group.vertex[j][2] = v2;
+                for (int i = 0; i < 3; ++i) group.weight[j][i] = fragment.weight[i];
+                group.w[j] = binned_fragment_w(fragment, vertex);
+                if (group.count == fragment_group_size) queue_group();
+                return;
+            }
             const float* const over_w[3] = {varyings_over_w + v0 * stride,
                                             varyings_over_w + v1 * stride,
                                             varyings_over_w + v2 * stride};
             shade_binned_fragment(framebuffer, state, fragment, vertex, over_w, shader);
         });
+    queue_group();
     shader.flush();
 }
 
@@ -481,13 +530,20 @@ void bin_triangles(const PreparedMesh& prepared, int band_height, TriangleBands&
         bin_triangle_run(prepared, 0, triangle_count, 0, choice, bands);
         return;
     }
-    // One run per slice, so each slice writes only its own lists.
+    // One run per slice, so each slice writes only its own lists. Slices start on a whole
+    // group of triangles: a grid's groups must start on a cell (grid_group_fits), and one
+    // offset by a triangle would classify every group of its slice by gathers. The lists
+    // are read slice after slice, so the bands are the same for any split.
     const auto slices = static_cast<std::size_t>(bands.slice_count);
+    auto slice_start = [&](std::size_t slice) {
+        if (slice == slices) return triangle_count;
+        const std::size_t start = triangle_count * slice / slices;
+        return start - start % static_cast<std::size_t>(binning_group_size);
+    };
     pool->parallel_for(slices, [&](std::size_t begin, std::size_t end) {
         for (std::size_t slice = begin; slice < end; ++slice)
-            bin_triangle_run(prepared, triangle_count * slice / slices,
-                             triangle_count * (slice + 1) / slices, static_cast<int>(slice), choice,
-                             bands);
+            bin_triangle_run(prepared, slice_start(slice), slice_start(slice + 1),
+                             static_cast<int>(slice), choice, bands);
     });
 }
 

@@ -381,25 +381,52 @@ void draw_triangle(Framebuffer& framebuffer, const RasterState& state, const Cli
     }
 }
 
-// Stages 5–6 for a pixel centre that binning found a tiny triangle to cover (BinnedFragment),
-// given the triangle's vertices and their varyings divided by w, both in setup order: the
-// same depth test, the same perspective-correct varyings and the same call of the shader, to
-// the bit, as PixelShading gives that centre when the pixel loops find it.
+// Stage 5 for a pixel centre that binning found a tiny triangle to cover (BinnedFragment),
+// given the triangle's vertices in setup order: its pixel, its depth, whether it passes the
+// state's depth test there, and then the depth written where the state writes depth.
+struct BinnedFragmentDepth {
+    std::size_t index = 0;  // the pixel's, in the framebuffer
+    float depth = 0.0f;
+    bool passed = false;
+};
+
+inline BinnedFragmentDepth test_binned_fragment_depth(Framebuffer& framebuffer,
+                                                      const RasterState& state,
+                                                      const BinnedFragment& binned,
+                                                      const WindowVertex* const (&vertex)[3]) {
+    const float b0 = binned.weight[0], b1 = binned.weight[1], b2 = binned.weight[2];
+    BinnedFragmentDepth result;
+    result.depth = b0 * vertex[0]->depth + b1 * vertex[1]->depth + b2 * vertex[2]->depth;
+    result.index = std::size_t{binned.y} * static_cast<std::size_t>(framebuffer.width()) + binned.x;
+    float* const depths = framebuffer.depths().data();
+    result.passed = !state.depth_test || result.depth < depths[result.index];
+    if (result.passed && state.depth_write) depths[result.index] = result.depth;
+    return result;
+}
+
+// The clip w at a binned fragment's pixel centre, from its vertices' 1/w.
+inline float binned_fragment_w(const BinnedFragment& binned,
+                               const WindowVertex* const (&vertex)[3]) {
+    return 1.0f /
+           (binned.weight[0] * vertex[0]->inverse_w + binned.weight[1] * vertex[1]->inverse_w +
+            binned.weight[2] * vertex[2]->inverse_w);
+}
+
+// Stages 5–6 for such a pixel centre, given also the vertices' varyings divided by w in setup
+// order: the same depth test, the same perspective-correct varyings and the same call of the
+// shader, to the bit, as PixelShading gives that centre when the pixel loops find it.
 template <class Shader>
 void shade_binned_fragment(Framebuffer& framebuffer, const RasterState& state,
                            const BinnedFragment& binned, const WindowVertex* const (&vertex)[3],
                            const float* const (&varying_over_w)[3], Shader& shader) {
-    const float b0 = binned.weight[0], b1 = binned.weight[1], b2 = binned.weight[2];
-    const float depth = b0 * vertex[0]->depth + b1 * vertex[1]->depth + b2 * vertex[2]->depth;
-    const std::size_t index =
-        std::size_t{binned.y} * static_cast<std::size_t>(framebuffer.width()) + binned.x;
-    float* const depths = framebuffer.depths().data();
-    if (state.depth_test && !(depth < depths[index])) return;
+    const BinnedFragmentDepth tested =
+        test_binned_fragment_depth(framebuffer, state, binned, vertex);
+    if (!tested.passed) return;
     std::array<float, max_varyings> varyings;
     const int varying_count = detail::varying_count_of<Shader>(state);
     if (varying_count > 0) {
-        const float w = 1.0f / (b0 * vertex[0]->inverse_w + b1 * vertex[1]->inverse_w +
-                                b2 * vertex[2]->inverse_w);
+        const float b0 = binned.weight[0], b1 = binned.weight[1], b2 = binned.weight[2];
+        const float w = binned_fragment_w(binned, vertex);
         for (int k = 0; k < varying_count; ++k) {
             varyings[k] = (b0 * varying_over_w[0][k] + b1 * varying_over_w[1][k] +
                            b2 * varying_over_w[2][k]) *
@@ -409,16 +436,13 @@ void shade_binned_fragment(Framebuffer& framebuffer, const RasterState& state,
     Fragment fragment;
     fragment.x = binned.x;
     fragment.y = binned.y;
-    fragment.depth = depth;
+    fragment.depth = tested.depth;
     fragment.front_facing = binned.front_facing();
     fragment.varyings = varyings.data();
-    if constexpr (detail::is_deferred<Shader>()) {
-        if (state.depth_write) depths[index] = depth;
-        shader.defer(index, static_cast<const Fragment&>(fragment));
-    } else {
-        framebuffer.colours()[index] = shader(static_cast<const Fragment&>(fragment));
-        if (state.depth_write) depths[index] = depth;
-    }
+    if constexpr (detail::is_deferred<Shader>())
+        shader.defer(tested.index, static_cast<const Fragment&>(fragment));
+    else
+        framebuffer.colours()[tested.index] = shader(static_cast<const Fragment&>(fragment));
 }
 
 // A triangle of a prepared mesh that needs no clipping: its vertices the caller has taken

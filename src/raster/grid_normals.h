@@ -12,8 +12,28 @@
 #include <vector>
 
 #include "raster/mesh.h"
+#include "raster/vector_isa.h"
 
 namespace weft::raster {
+
+namespace grid_normals_kernel {
+
+// The arrays the row loops read (grid_normals_kernel.inl).
+struct FaceJob {
+    int rows = 0, cols = 0;
+    const float* position[3] = {};  // m, x y z per particle
+    const float* a[3] = {};         // the cells' face normals (GridNormals::a_, b_)
+    const float* b[3] = {};
+};
+
+// The row loops built with AVX2 (grid_normals_avx2.cpp); only where avx2_supported().
+// find_faces writes the face normals into a and b, the arrays the job reads them from.
+void find_faces_avx2(const FaceJob& job, float* const (&a)[3], float* const (&b)[3],
+                     std::size_t row_begin, std::size_t row_end);
+void gather_avx2(const FaceJob& job, glm::vec3* normals, std::size_t row_begin,
+                 std::size_t row_end);
+
+}  // namespace grid_normals_kernel
 
 // Whether `triangles` are exactly that grid's for a rows × cols sheet (at least 2 × 2).
 bool is_whole_grid(std::span<const TriangleIndices> triangles, int rows, int cols);
@@ -31,8 +51,16 @@ class GridNormals {
     // The unit normal of every vertex on rows [begin, end), into normals (one per particle).
     void gather(std::span<glm::vec3> normals, std::size_t row_begin, std::size_t row_end) const;
 
+    // Whether the row loops use their AVX2 build, where the CPU has it (vector_isa.h): the
+    // same bits either way.
+    void use_avx2(bool enabled) { avx2_ = enabled && avx2_supported(); }
+    bool avx2_in_use() const { return avx2_; }
+
   private:
+    grid_normals_kernel::FaceJob job() const;
+
     int rows_ = 0, cols_ = 0;
+    bool avx2_ = avx2_supported();
     std::vector<float> x_, y_, z_;  // m, one per particle
     // The face normals of each cell's first (a) and second (b) triangle, per component,
     // (rows - 1) × (cols - 1): twice the triangle's area long.

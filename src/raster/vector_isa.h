@@ -6,9 +6,11 @@
 // build computes every value alike — the same operations in the same order, no fused
 // multiply-add — so a frame is the same to the byte either way (tested). Each Framebuffer says
 // whether drawing into it uses them (Framebuffer::use_avx512, use_avx2); nothing in the
-// process chooses for it. Binning's classification of triangles (binning_avx2.h) is integer
-// work with one answer, and the vertex transform's positions (vertex_transform_avx2.h) are
-// the scalar operations in lanes: both run wherever AVX2 does.
+// process chooses for it; the binned fragments' varyings (fragment_varyings_avx2.h) follow the
+// framebuffer's choice, and a whole grid's normals (GridNormals::use_avx2) make their own.
+// Binning's classification of triangles (binning_avx2.h) is integer work with one answer, and
+// the vertex transform's positions (vertex_transform_avx2.h) are the scalar operations in
+// lanes: both run wherever AVX2 does.
 #pragma once
 
 namespace weft::raster {

@@ -10,6 +10,7 @@
 
 #include "raster/grid_normals.h"
 #include "raster/mesh.h"
+#include "raster/vector_isa.h"
 #include "raster_test_support.h"
 
 namespace weft::raster {
@@ -28,8 +29,9 @@ std::vector<glm::vec3> general_normals(const std::vector<glm::vec3>& positions,
 }
 
 std::vector<glm::vec3> grid_normals(const std::vector<glm::vec3>& positions, int rows, int cols,
-                                    std::size_t split) {
+                                    std::size_t split, bool avx2) {
     GridNormals grid;
+    grid.use_avx2(avx2);
     grid.resize(rows, cols);
     std::vector<glm::vec3> normals(positions.size(), glm::vec3(7.0f));
     const auto all_rows = static_cast<std::size_t>(rows);
@@ -63,16 +65,30 @@ TEST(GridNormals, GiveTheGeneralPassesBits) {
             }
             const std::vector<glm::vec3> expected = general_normals(positions, triangles);
             for (std::size_t split : {std::size_t{0}, std::size_t{1}, std::size_t(rows / 2)}) {
-                const std::vector<glm::vec3> normals = grid_normals(positions, rows, cols, split);
-                EXPECT_EQ(std::memcmp(normals.data(), expected.data(),
-                                      normals.size() * sizeof(glm::vec3)),
-                          0)
-                    << rows << " x " << cols << ", shape " << shape << ", split " << split;
+                // Both builds of the row loops, where the CPU runs the AVX2 one.
+                for (const bool avx2 : {false, true}) {
+                    const std::vector<glm::vec3> normals =
+                        grid_normals(positions, rows, cols, split, avx2);
+                    EXPECT_EQ(std::memcmp(normals.data(), expected.data(),
+                                          normals.size() * sizeof(glm::vec3)),
+                              0)
+                        << rows << " x " << cols << ", shape " << shape << ", split " << split
+                        << (avx2 ? ", AVX2" : ", baseline");
+                }
                 ++cases;
             }
         }
     }
     EXPECT_EQ(cases, 6 * 4 * 3);
+}
+
+TEST(GridNormals, UseTheirAvx2BuildOnlyWhereTheCpuRunsIt) {
+    GridNormals grid;
+    EXPECT_EQ(grid.avx2_in_use(), avx2_supported());
+    grid.use_avx2(false);
+    EXPECT_FALSE(grid.avx2_in_use());
+    grid.use_avx2(true);
+    EXPECT_EQ(grid.avx2_in_use(), avx2_supported());
 }
 
 TEST(GridNormals, OnlyAWholeGridInOrderIsOne) {

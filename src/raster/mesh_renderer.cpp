@@ -180,10 +180,23 @@ void transform_vertices(const glm::mat4& view_projection, PreparedMesh& prepared
         transform_positions_avx2(clip_from_model, prepared.mesh.positions.data(), begin, groups,
                                  prepared.width, prepared.height, prepared.clip.data(),
                                  prepared.outcodes.data(), prepared.window.data());
-        for (const std::size_t stepped = begin + groups * transform_group_size; i < stepped; ++i) {
+        const std::size_t stepped = begin + groups * transform_group_size;
+        // A surface in world space with uvs and no colours (a cloth's) has its eight varyings
+        // in one vector a vertex.
+        bool divided = false;
+        if constexpr (HasUv && !HasColour) {
+            if (prepared.model_is_world) {
+                divide_surface_varyings_avx2(prepared.mesh.positions.data(),
+                                             prepared.mesh.normals.data(), prepared.mesh.uvs.data(),
+                                             prepared.outcodes.data(), prepared.window.data(), i,
+                                             stepped, prepared.varyings_over_w.data());
+                divided = true;
+            }
+        }
+        for (; i < stepped; ++i) {
             if ((prepared.outcodes[i] & clipping_planes) == 0) {
                 keep_snapped(i, prepared.window[i]);
-                divide_varyings(i, prepared.window[i].inverse_w);
+                if (!divided) divide_varyings(i, prepared.window[i].inverse_w);
             }
         }
     }

@@ -126,7 +126,31 @@ void transform_positions_avx2(const glm::mat4& clip_from_model, const glm::vec3*
     }
 }
 
+void divide_surface_varyings_avx2(const glm::vec3* positions, const glm::vec3* normals,
+                                  const glm::vec2* uvs, const std::uint32_t* outcodes,
+                                  const WindowVertex* window, std::size_t begin, std::size_t end,
+                                  float* varyings_over_w) {
+    static_assert(sizeof(glm::vec2) == 2 * sizeof(float));
+    const __m128i three = _mm_setr_epi32(-1, -1, -1, 0);  // a vec3's floats, not the next one's
+    for (std::size_t i = begin; i < end; ++i) {
+        if ((outcodes[i] & clipping_planes) != 0) continue;
+        // [x y z nx] and [ny nz u v].
+        const __m128 position = _mm_maskload_ps(&positions[i].x, three);
+        const __m128 low = _mm_blend_ps(position, _mm_set1_ps(normals[i].x), 0b1000);
+        const __m128 high = _mm_movelh_ps(
+            _mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(&normals[i].y))),
+            _mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(&uvs[i].x))));
+        const __m256 varyings = _mm256_set_m128(high, low);
+        _mm256_storeu_ps(varyings_over_w + 8 * i,
+                         _mm256_mul_ps(varyings, _mm256_set1_ps(window[i].inverse_w)));
+    }
+}
+
 #else
+
+void divide_surface_varyings_avx2(const glm::vec3*, const glm::vec3*, const glm::vec2*,
+                                  const std::uint32_t*, const WindowVertex*, std::size_t,
+                                  std::size_t, float*) {}
 
 void transform_positions_avx2(const glm::mat4&, const glm::vec3*, std::size_t, std::size_t, int,
                               int, glm::vec4*, std::uint32_t*, WindowVertex*) {}

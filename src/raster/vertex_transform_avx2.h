@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
@@ -30,5 +31,15 @@ inline constexpr int largest_avx2_viewport_side = 65535;
 void transform_positions_avx2(const glm::mat4& clip_from_model, const glm::vec3* positions,
                               std::size_t begin, std::size_t groups, int width, int height,
                               glm::vec4* clip, std::uint32_t* outcodes, WindowVertex* window);
+
+// The varyings of vertices [begin, end) of a surface given in world space with position,
+// normal and uv (SurfaceShader<true, false>'s eight: x y z, normal x y z, u v), each times
+// its window vertex's inverse_w, into varyings_over_w[8 i ...], where outcodes[i] has no
+// clipping plane: one vector a vertex, the scalar products' bits. Only where
+// avx2_supported().
+void divide_surface_varyings_avx2(const glm::vec3* positions, const glm::vec3* normals,
+                                  const glm::vec2* uvs, const std::uint32_t* outcodes,
+                                  const WindowVertex* window, std::size_t begin, std::size_t end,
+                                  float* varyings_over_w);
 
 }  // namespace weft::raster

@@ -137,9 +137,9 @@ void divide_surface_varyings_avx2(const glm::vec3* positions, const glm::vec3* n
         // [x y z nx] and [ny nz u v].
         const __m128 position = _mm_maskload_ps(&positions[i].x, three);
         const __m128 low = _mm_blend_ps(position, _mm_set1_ps(normals[i].x), 0b1000);
-        const __m128 high = _mm_movelh_ps(
-            _mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(&normals[i].y))),
-            _mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(&uvs[i].x))));
+        // Two floats a load, at any alignment (_mm_loadu_si64 reads through an unaligned type).
+        const __m128 high = _mm_movelh_ps(_mm_castsi128_ps(_mm_loadu_si64(&normals[i].y)),
+                                          _mm_castsi128_ps(_mm_loadu_si64(&uvs[i].x)));
         const __m256 varyings = _mm256_set_m128(high, low);
         _mm256_storeu_ps(varyings_over_w + 8 * i,
                          _mm256_mul_ps(varyings, _mm256_set1_ps(window[i].inverse_w)));

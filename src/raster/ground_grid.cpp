@@ -21,16 +21,16 @@ PlaneGrid PlaneGrid::facing(const glm::vec3& centre, const glm::vec3& normal) {
     return grid;
 }
 
-void draw_plane_grid(Framebuffer& framebuffer, const Camera& camera, const PlaneGrid& grid,
-                     const LineStyle& style) {
+namespace {
+
+// The grid's lines, a batch at a time, to `take(segments)`.
+template <class Take>
+void plane_grid_segments(const PlaneGrid& grid, Take&& take) {
     const int cells = std::clamp(grid.cell_count, 1, 1000);
     const float half_extent = 0.5f * static_cast<float>(cells) * grid.cell_size;
     const glm::vec3 corner = grid.centre - half_extent * (grid.axis_u + grid.axis_v);
     const glm::vec3 along_u = 2.0f * half_extent * grid.axis_u;
     const glm::vec3 along_v = 2.0f * half_extent * grid.axis_v;
-    // All the lines in one call, a batch at a time: each call works out the camera's
-    // matrices again, and a frame drawn in 23 bands drew the ground grid's 42 lines in 21
-    // calls per band.
     constexpr int batch_lines = 64;
     LineSegment segments[batch_lines];
     int queued = 0;
@@ -42,21 +42,48 @@ void draw_plane_grid(Framebuffer& framebuffer, const Camera& camera, const Plane
         segments[queued++] = {u_line, u_line + along_v, colour, colour};
         segments[queued++] = {v_line, v_line + along_u, colour, colour};
         if (queued == batch_lines || i == cells) {
-            draw_lines(framebuffer, camera, std::span<const LineSegment>(segments, queued), style);
+            take(std::span<const LineSegment>(segments, queued));
             queued = 0;
         }
     }
 }
 
-void draw_ground_grid(Framebuffer& framebuffer, const Camera& camera, const GroundGrid& grid,
-                      const LineStyle& style) {
+PlaneGrid plane_of(const GroundGrid& grid) {
     PlaneGrid plane;
     plane.centre = {grid.centre.x, grid.height, grid.centre.y};
     plane.cell_count = grid.cell_count;
     plane.cell_size = grid.cell_size;
     plane.colour = grid.colour;
     plane.centre_colour = grid.centre_colour;
-    draw_plane_grid(framebuffer, camera, plane, style);
+    return plane;
+}
+
+}  // namespace
+
+void draw_plane_grid(Framebuffer& framebuffer, const Camera& camera, const PlaneGrid& grid,
+                     const LineStyle& style) {
+    // All the lines in one call a batch: each call works out the camera's matrices again.
+    plane_grid_segments(grid, [&](std::span<const LineSegment> segments) {
+        draw_lines(framebuffer, camera, segments, style);
+    });
+}
+
+void prepare_plane_grid(const Framebuffer& framebuffer, const Camera& camera, const PlaneGrid& grid,
+                        float depth_bias, std::vector<PreparedLine>& lines) {
+    plane_grid_segments(grid, [&](std::span<const LineSegment> segments) {
+        prepare_lines(framebuffer, camera, segments, depth_bias, lines);
+    });
+}
+
+void draw_ground_grid(Framebuffer& framebuffer, const Camera& camera, const GroundGrid& grid,
+                      const LineStyle& style) {
+    draw_plane_grid(framebuffer, camera, plane_of(grid), style);
+}
+
+void prepare_ground_grid(const Framebuffer& framebuffer, const Camera& camera,
+                         const GroundGrid& grid, float depth_bias,
+                         std::vector<PreparedLine>& lines) {
+    prepare_plane_grid(framebuffer, camera, plane_of(grid), depth_bias, lines);
 }
 
 }  // namespace weft::raster

@@ -2,6 +2,8 @@
 // lines so the cloth and colliders sit visibly above (or fall through) the floor.
 #pragma once
 
+#include <vector>
+
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -25,6 +27,10 @@ struct GroundGrid {
 // at the near plane, so the grid never wraps over the sky.
 void draw_ground_grid(Framebuffer& framebuffer, const Camera& camera, const GroundGrid& grid,
                       const LineStyle& style = {});
+// Its lines set up for drawing in bands (line_renderer.h: prepare_lines), appended to `lines`.
+void prepare_ground_grid(const Framebuffer& framebuffer, const Camera& camera,
+                         const GroundGrid& grid, float depth_bias,
+                         std::vector<PreparedLine>& lines);
 
 // The same grid on any plane: square cells along two perpendicular unit axes of the plane,
 // centred on a point of it (a tilted plane collider: a slope, a wall).
@@ -44,5 +50,7 @@ struct PlaneGrid {
 
 void draw_plane_grid(Framebuffer& framebuffer, const Camera& camera, const PlaneGrid& grid,
                      const LineStyle& style = {});
+void prepare_plane_grid(const Framebuffer& framebuffer, const Camera& camera, const PlaneGrid& grid,
+                        float depth_bias, std::vector<PreparedLine>& lines);
 
 }  // namespace weft::raster

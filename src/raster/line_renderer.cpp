@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -31,13 +32,6 @@ class BiasedProjection {
     glm::mat4 view_;
     glm::mat4 projection_;
     float scale_;
-};
-
-// A line endpoint after the divide: window position and depth, 1/w, and colour / w.
-struct WindowPoint {
-    glm::vec3 window;
-    float inverse_w;
-    glm::vec3 colour_over_w;
 };
 
 WindowPoint lerp(const WindowPoint& a, const WindowPoint& b, float t) {
@@ -94,10 +88,12 @@ bool clip_segment(ClipEnd& a, ClipEnd& b, Distance distance) {
     return true;
 }
 
-// The DDA over the major axis. `a`, `b` already clipped to (a margin around) the scissor.
+// The DDA over the major axis, of a line already clipped to (a margin around) the framebuffer.
 // Every pixel is computed from the start point, not accumulated, so long lines do not drift.
-void walk_line(Framebuffer& framebuffer, WindowPoint a, WindowPoint b, const PixelRect& scissor,
-               const LineStyle& style, bool blend_colours) {
+void walk_line(Framebuffer& framebuffer, const PreparedLine& line, const PixelRect& scissor,
+               const LineStyle& style) {
+    WindowPoint a = line.a, b = line.b;
+    const bool blend_colours = line.blend_colours;
     const bool x_major = std::abs(b.window.x - a.window.x) >= std::abs(b.window.y - a.window.y);
     const int major = x_major ? 0 : 1, minor = 1 - major;
     if (a.window[major] > b.window[major]) std::swap(a, b);
@@ -165,15 +161,15 @@ void walk_line(Framebuffer& framebuffer, WindowPoint a, WindowPoint b, const Pix
     }
 }
 
-}  // namespace
-
-void draw_clip_space_line(Framebuffer& framebuffer, const glm::vec4& a, const glm::vec4& b,
-                          Rgba8 colour_a, Rgba8 colour_b, const LineStyle& style) {
+// Cull, clip and divide: everything of a line's drawing that does not depend on the scissor;
+// nothing when no part of it can be drawn.
+std::optional<PreparedLine> prepare_clip_space_line(const Framebuffer& framebuffer,
+                                                    const glm::vec4& a, const glm::vec4& b,
+                                                    Rgba8 colour_a, Rgba8 colour_b) {
     // Cull: both ends outside the same frustum plane, or not a number.
     const std::uint32_t code_a = clip_outcode(a), code_b = clip_outcode(b);
-    if ((code_a & code_b & frustum_planes) != 0 || ((code_a | code_b) & not_finite) != 0) return;
-    const PixelRect scissor = style.scissor.intersect(framebuffer.bounds());
-    if (scissor.empty()) return;
+    if ((code_a & code_b & frustum_planes) != 0 || ((code_a | code_b) & not_finite) != 0)
+        return std::nullopt;
 
     // Clip against the near plane in clip space (from the inside end, as for triangles), so
     // a line passing behind the camera keeps only its visible part instead of wrapping;
@@ -181,7 +177,7 @@ void draw_clip_space_line(Framebuffer& framebuffer, const glm::vec4& a, const gl
     ClipEnd end_a{a, to_vec3(colour_a)}, end_b{b, to_vec3(colour_b)};
     if (!clip_segment(end_a, end_b, [](const glm::vec4& p) { return p.z + p.w; }) ||
         !clip_segment(end_a, end_b, [](const glm::vec4& p) { return p.w - min_clip_w; })) {
-        return;
+        return std::nullopt;
     }
 
     // Divide and viewport.
@@ -198,11 +194,40 @@ void draw_clip_space_line(Framebuffer& framebuffer, const glm::vec4& a, const gl
     float t0 = 0.0f, t1 = 1.0f;
     if (!clip_to_rect(glm::vec2(p0.window), glm::vec2(p1.window), -1.0f, -1.0f, width_f + 1.0f,
                       height_f + 1.0f, t0, t1)) {
-        return;
+        return std::nullopt;
     }
-    const WindowPoint q0 = t0 > 0.0f ? lerp(p0, p1, t0) : p0;
-    const WindowPoint q1 = t1 < 1.0f ? lerp(p0, p1, t1) : p1;
-    walk_line(framebuffer, q0, q1, scissor, style, colour_a != colour_b);
+    return PreparedLine{t0 > 0.0f ? lerp(p0, p1, t0) : p0, t1 < 1.0f ? lerp(p0, p1, t1) : p1,
+                        colour_a != colour_b};
+}
+
+}  // namespace
+
+void draw_clip_space_line(Framebuffer& framebuffer, const glm::vec4& a, const glm::vec4& b,
+                          Rgba8 colour_a, Rgba8 colour_b, const LineStyle& style) {
+    const PixelRect scissor = style.scissor.intersect(framebuffer.bounds());
+    if (scissor.empty()) return;
+    if (const std::optional<PreparedLine> line =
+            prepare_clip_space_line(framebuffer, a, b, colour_a, colour_b))
+        walk_line(framebuffer, *line, scissor, style);
+}
+
+void prepare_lines(const Framebuffer& framebuffer, const Camera& camera,
+                   std::span<const LineSegment> segments, float depth_bias,
+                   std::vector<PreparedLine>& lines) {
+    const BiasedProjection project(camera, framebuffer, depth_bias);
+    for (const LineSegment& segment : segments) {
+        if (const std::optional<PreparedLine> line =
+                prepare_clip_space_line(framebuffer, project(segment.a), project(segment.b),
+                                        segment.colour_a, segment.colour_b))
+            lines.push_back(*line);
+    }
+}
+
+void draw_prepared_lines(Framebuffer& framebuffer, std::span<const PreparedLine> lines,
+                         const LineStyle& style) {
+    const PixelRect scissor = style.scissor.intersect(framebuffer.bounds());
+    if (scissor.empty()) return;
+    for (const PreparedLine& line : lines) walk_line(framebuffer, line, scissor, style);
 }
 
 void draw_lines(Framebuffer& framebuffer, const Camera& camera,

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <span>
+#include <vector>
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -47,13 +48,36 @@ struct LineSegment {
     Rgba8 colour_a, colour_b;
 };
 
+// A line endpoint after the divide: window position and depth, 1/w, and colour / w.
+struct WindowPoint {
+    glm::vec3 window;
+    float inverse_w;
+    glm::vec3 colour_over_w;
+};
+
+// A segment clipped and divided, ready for the pixel walk: what a line's drawing works out
+// before it looks at the scissor. A frame drawn in bands sets each line up once and walks
+// it in every band (prepare_lines, draw_prepared_lines), the same pixels as drawing it whole
+// with each band's scissor.
+struct PreparedLine {
+    WindowPoint a, b;
+    bool blend_colours = false;  // the ends' colours differ
+};
+
 // One segment given in clip space (no bias applied): near-plane clipped in clip space, then
-// clipped to the scissor in window space so the DDA only walks pixels that can be drawn.
+// clipped to the framebuffer in window space so the DDA only walks pixels that can be drawn.
 void draw_clip_space_line(Framebuffer& framebuffer, const glm::vec4& a, const glm::vec4& b,
                           Rgba8 colour_a, Rgba8 colour_b, const LineStyle& style = {});
 
 void draw_lines(Framebuffer& framebuffer, const Camera& camera,
                 std::span<const LineSegment> segments, const LineStyle& style = {});
+// draw_lines in two halves: the segments set up (appended to `lines`, each pulled in by
+// `depth_bias` as LineStyle's) and then drawn, as often as there are bands.
+void prepare_lines(const Framebuffer& framebuffer, const Camera& camera,
+                   std::span<const LineSegment> segments, float depth_bias,
+                   std::vector<PreparedLine>& lines);
+void draw_prepared_lines(Framebuffer& framebuffer, std::span<const PreparedLine> lines,
+                         const LineStyle& style = {});
 
 // Lines between shared vertices, each vertex transformed once: wireframes and springs.
 // `line_colours` has one colour per line (else nothing is drawn).

@@ -10,6 +10,7 @@
 #include "parallel/worker_pool.h"
 #include "raster/colour.h"
 #include "raster/grid_normals.h"
+#include "raster/line_renderer.h"
 #include "raster/mesh.h"
 #include "raster/mesh_renderer.h"
 #include "sim/core/cloth.h"
@@ -56,6 +57,8 @@ class ClothView {
     raster::PreparedMesh& shadow_mesh() { return shadow_mesh_; }
     raster::TriangleBands& shadow_bands() { return shadow_bands_; }
     std::vector<raster::PreparedMesh>& collider_shadows() { return collider_shadows_; }
+    // The ground's and the plane colliders' grids, set up once a frame for every band.
+    std::vector<raster::PreparedLine>& grid_lines() { return grid_lines_; }
 
   private:
     // Texture coordinates, m: a grid's from its rows and columns, a mesh's from its shape.
@@ -86,6 +89,7 @@ class ClothView {
     raster::PreparedMesh shadow_mesh_;
     raster::TriangleBands shadow_bands_;
     std::vector<raster::PreparedMesh> collider_shadows_;
+    std::vector<raster::PreparedLine> grid_lines_;
 };
 
 }  // namespace weft::view

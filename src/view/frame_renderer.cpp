@@ -123,6 +123,25 @@ void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera
     raster::TriangleBands& shadow_bands = view.shadow_bands();
     if (onto_ground && cloth_drawn)
         raster::bin_triangles(cloth_shadow, frame_band_rows, shadow_bands, pool);
+    // The grids' lines, set up once and walked in every band: the ground's, then planes that
+    // are not the ground (a slope, a wall) as a grid of their own.
+    std::vector<raster::PreparedLine>& grid_lines = view.grid_lines();
+    grid_lines.clear();
+    const float line_depth_bias = raster::LineStyle{}.depth_bias;
+    if (options.ground) {
+        raster::GroundGrid grid;
+        grid.height = ground_height;
+        raster::prepare_ground_grid(framebuffer, camera, grid, line_depth_bias, grid_lines);
+    }
+    for (const Collider& collider : colliders) {
+        if (collider.type != ColliderType::plane || is_ground_plane(collider)) continue;
+        raster::PlaneGrid grid =
+            raster::PlaneGrid::facing(glm::vec3(collider.point), glm::vec3(collider.normal));
+        grid.cell_count = 8;  // 2 m: the plane is endless, its grid need not be
+        grid.colour = {150, 120, 90, 255};
+        grid.centre_colour = {190, 150, 110, 255};
+        raster::prepare_plane_grid(framebuffer, camera, grid, line_depth_bias, grid_lines);
+    }
     auto draw_band = [&](int band) {
         const raster::PixelRect rect{0, band * frame_band_rows, width,
                                      std::min((band + 1) * frame_band_rows, height)};
@@ -136,22 +155,7 @@ void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera
         }
         raster::LineStyle lines;
         lines.scissor = rect;
-        if (options.ground) {
-            raster::GroundGrid grid;
-            grid.height = ground_height;
-            raster::draw_ground_grid(framebuffer, camera, grid, lines);
-        }
-        // Planes that are not the ground (a slope, a wall) as a grid of their own; the one
-        // the ground grid stands for is already drawn.
-        for (const Collider& collider : colliders) {
-            if (collider.type != ColliderType::plane || is_ground_plane(collider)) continue;
-            raster::PlaneGrid grid =
-                raster::PlaneGrid::facing(glm::vec3(collider.point), glm::vec3(collider.normal));
-            grid.cell_count = 8;  // 2 m: the plane is endless, its grid need not be
-            grid.colour = {150, 120, 90, 255};
-            grid.centre_colour = {190, 150, 110, 255};
-            raster::draw_plane_grid(framebuffer, camera, grid, lines);
-        }
+        raster::draw_prepared_lines(framebuffer, grid_lines, lines);
         for (std::size_t k = 0; k < sphere_count; ++k)
             raster::draw_prepared_mesh(framebuffer, spheres[k], collider_style, lighting, rect);
         if (cloth_drawn)

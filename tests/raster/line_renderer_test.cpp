@@ -196,11 +196,9 @@ TEST(LineRenderer, ColoursBlendAlongTheLineAndIndexedLinesTakeOneColourEach) {
     EXPECT_EQ(green, 0);
 }
 
-TEST(LineRenderer, ScissorTilesTogetherDrawExactlyWhatTheWholeFramebufferDraws) {
-    // Lines drawn tile by tile (as a threaded renderer will) must land on the same pixels as
-    // one untiled draw, including long lines running far off screen and behind the camera.
-    const int width = 61, height = 47;
-    const Camera camera = make_camera({0.3f, 0.6f, 1.2f}, {0.0f, 0.0f, 0.0f}, 60.0f);
+// Forty segments every which way, for a camera at about (0.3, 0.6, 1.2): long ones running
+// far off screen and behind the camera among them; every other one fades to red.
+std::vector<LineSegment> scattered_segments() {
     std::vector<LineSegment> segments;
     for (int i = 0; i < 40; ++i) {
         const float a = 0.37f * static_cast<float>(i), b = 1.3f + 0.71f * static_cast<float>(i);
@@ -209,8 +207,17 @@ TEST(LineRenderer, ScissorTilesTogetherDrawExactlyWhatTheWholeFramebufferDraws) 
         segments.push_back({{std::cos(a) * 3.0f, std::sin(b) * 0.8f, std::sin(a) * 3.0f},
                             {std::cos(b) * 0.5f, std::cos(a) * 2.0f, (i % 3 == 0 ? 6.0f : -0.7f)},
                             colour,
-                            Rgba8{255, 40, 40, 255}});
+                            i % 2 == 0 ? colour : Rgba8{255, 40, 40, 255}});
     }
+    return segments;
+}
+
+TEST(LineRenderer, ScissorTilesTogetherDrawExactlyWhatTheWholeFramebufferDraws) {
+    // Lines drawn tile by tile (as a threaded renderer will) must land on the same pixels as
+    // one untiled draw, including long lines running far off screen and behind the camera.
+    const int width = 61, height = 47;
+    const Camera camera = make_camera({0.3f, 0.6f, 1.2f}, {0.0f, 0.0f, 0.0f}, 60.0f);
+    const std::vector<LineSegment> segments = scattered_segments();
     Framebuffer whole(width, height), tiled(width, height);
     whole.clear(background);
     tiled.clear(background);
@@ -227,6 +234,55 @@ TEST(LineRenderer, ScissorTilesTogetherDrawExactlyWhatTheWholeFramebufferDraws) 
         for (int x = 0; x < width; ++x) {
             ASSERT_EQ(whole.colour(x, y), tiled.colour(x, y)) << "pixel (" << x << ", " << y << ")";
             ASSERT_EQ(whole.depth(x, y), tiled.depth(x, y)) << "pixel (" << x << ", " << y << ")";
+        }
+    }
+}
+
+TEST(LineRenderer, LinesSetUpOnceDrawInBandsWhatTheyDrawWhole) {
+    // A banded frame sets its grids' lines up once and walks them in every band: the same
+    // pixels, colours and depths as drawing the lines whole, for any band height, including
+    // lines that run behind the camera and off screen. Each band's depth test sees what the
+    // surface left, so a surface is drawn first.
+    const int width = 97, height = 61;
+    const Camera camera = make_camera({0.3f, 0.6f, 1.2f}, {0.0f, 0.0f, 0.0f}, 60.0f);
+    const std::vector<LineSegment> segments = scattered_segments();
+    GroundGrid ground;
+    ground.height = -0.4f;
+    PlaneGrid wall = PlaneGrid::facing({0.0f, 0.0f, -1.0f}, {0.2f, 0.1f, 1.0f});
+    wall.cell_count = 8;
+    auto surface = [&](Framebuffer& fb) {
+        fb.clear(background);
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) fb.depth(x, y) = 0.9f + 0.001f * static_cast<float>(x);
+    };
+    const float bias = LineStyle{}.depth_bias;
+    Framebuffer whole(width, height);
+    surface(whole);
+    draw_lines(whole, camera, segments);
+    draw_ground_grid(whole, camera, ground);
+    draw_plane_grid(whole, camera, wall);
+    std::vector<PreparedLine> prepared;
+    prepare_lines(whole, camera, segments, bias, prepared);
+    prepare_ground_grid(whole, camera, ground, bias, prepared);
+    prepare_plane_grid(whole, camera, wall, bias, prepared);
+    EXPECT_GT(prepared.size(), 40u);
+    EXPECT_LT(prepared.size(), segments.size() + 2 * 21 + 2 * 9);  // some are off screen
+    for (int band_height : {1, 7, 16, height}) {
+        Framebuffer banded(width, height);
+        surface(banded);
+        for (int y = 0; y < height; y += band_height) {
+            LineStyle style;
+            style.scissor = {0, y, width, std::min(y + band_height, height)};
+            draw_prepared_lines(banded, prepared, style);
+        }
+        EXPECT_GT(drawn_pixels(whole).size(), 400u);
+        for (int y = 0; y < height; ++y) {
+            for (int x = 0; x < width; ++x) {
+                ASSERT_EQ(whole.colour(x, y), banded.colour(x, y))
+                    << "pixel (" << x << ", " << y << "), bands of " << band_height;
+                ASSERT_EQ(whole.depth(x, y), banded.depth(x, y))
+                    << "pixel (" << x << ", " << y << "), bands of " << band_height;
+            }
         }
     }
 }

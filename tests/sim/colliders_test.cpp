@@ -5,6 +5,11 @@
 
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "sim/collision/colliders.h"
 
 #include "sim/core/simulation.h"
 #include "test_scenes.h"
@@ -102,6 +107,53 @@ TEST(ImpulseContact, ASheetDrapedOverASphereNeverEndsAStepInsideIt) {
     EXPECT_GT(contacts, 0u);
     // The middle of the sheet rests on top of the sphere.
     EXPECT_NEAR(simulation.cloth().positions[7 * 16 + 7].y, 0.3, 0.02);
+}
+
+// The contacts' scan tests blocks of particles before it looks at one; a level floor has a
+// test of its own (one comparison a particle). Against signed_distance particle by particle,
+// over particles on both sides, on the floor exactly, and with a coordinate that is not
+// finite: every particle below the floor, and no other, is moved onto it.
+TEST(ImpulseContact, ALevelFloorTakesExactlyTheParticlesBelowIt) {
+    Collider floor;
+    floor.type = ColliderType::plane;
+    floor.point = {0.3, -0.25, 0.7};
+    floor.normal = {0.0, 1.0, 0.0};
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> around(-1.0, 1.0);
+    const std::size_t count = 203;  // several blocks and a part of one
+    std::vector<Vec3> positions(count), velocities(count, Vec3(0.0, -1.0, 0.0));
+    for (Vec3& x : positions) x = {around(random), -0.25 + 1e-3 * around(random), around(random)};
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double infinity = std::numeric_limits<double>::infinity();
+    positions[5].y = -0.25;  // on the floor: not below it
+    positions[40] = {nan, -0.5, 0.0};
+    positions[41] = {0.0, -0.5, infinity};
+    positions[42] = {0.0, nan, 0.0};
+    positions[100].y = std::nextafter(-0.25, -1.0);
+    const std::vector<double> inverse_masses(count, 1.0);
+    std::vector<Vec3> expected = positions;
+    std::size_t expected_moved = 0;
+    for (Vec3& x : expected) {
+        Vec3 n;
+        const double distance = signed_distance(floor, x, n);
+        if (distance < 0.0) {
+            x -= distance * n;
+            ++expected_moved;
+        }
+    }
+    ASSERT_GT(expected_moved, 50u);
+    const std::vector<Collider> colliders = {floor};
+    const std::size_t moved = resolve_impulse_contacts(
+        colliders, positions.data(), velocities.data(), inverse_masses.data(), 0, count);
+    EXPECT_EQ(moved, expected_moved);
+    for (std::size_t p = 0; p < count; ++p) {
+        for (int k = 0; k < 3; ++k) {
+            if (std::isnan(expected[p][k]))
+                EXPECT_TRUE(std::isnan(positions[p][k])) << p;
+            else
+                EXPECT_EQ(positions[p][k], expected[p][k]) << p << " " << k;
+        }
+    }
 }
 
 }  // namespace

@@ -91,6 +91,15 @@ unsigned maybe_inside(const Collider& collider, const Vec3* x, std::size_t first
     const bool plane = collider.type == ColliderType::plane;
     const Vec3 a = plane ? collider.point : collider.center;  // m
     const Vec3 n = collider.normal;
+    if (plane && n == Vec3(0.0, 1.0, 0.0)) {
+        // A level floor: one comparison a particle. (dx 0 + dy 1) + dz 0 < 0 exactly when
+        // y < a.y, for finite dx and dz (a zero term adds nothing, and a difference of doubles
+        // has the sign of their order); an infinite or NaN dx or dz makes that sum NaN, and
+        // the caller leaves a plane's NaN distance alone. So a superset of the test below,
+        // with the same outcome.
+        for (; p < last; ++p) maybe |= (x[p].y < a.y ? 1u : 0u) << (p - first);
+        return maybe;
+    }
     const double clearly_outside_squared = collider.radius * collider.radius * (1.0 + 1e-9);
 #if defined(__SSE2__)
     const sse2::ParticlePair a_two = sse2::splat(a), n_two = sse2::splat(n);
@@ -136,11 +145,14 @@ std::size_t move_onto_impulse_colliders(std::span<const Collider> colliders, Vec
             if (collider.response != ContactResponse::impulse) continue;
             const unsigned maybe = maybe_inside(collider, positions, first, last);
             if (maybe == 0) continue;
+            const bool plane = collider.type == ColliderType::plane;
             for (std::size_t p = first; p < last; ++p) {
                 if (!(maybe >> (p - first) & 1u) || inverse_masses[p] == 0.0) continue;  // pinned
                 Vec3 n;
                 const double distance = signed_distance(collider, positions[p], n);
-                if (distance >= 0.0) continue;
+                // A NaN distance: a sphere moves the particle (its test lets a NaN through),
+                // a plane never has (its test does not).
+                if (distance >= 0.0 || (plane && std::isnan(distance))) continue;
                 ++moved;
                 positions[p] -= distance * n;  // onto the surface
                 respond(collider, velocities[p], n);

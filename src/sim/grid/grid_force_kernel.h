@@ -61,8 +61,9 @@ struct SweepFlags {
 inline std::size_t scratch_doubles(int cols) {
     const auto padded = static_cast<std::size_t>(cols + 2 * row_padding);
     // Three rows of x, v (6 components), three rows of spring forces (3 per direction), one
-    // row of force sums (3 components) and a row of zeros.
-    return 3 * 6 * padded + 3 * max_directions * 3 * padded + 3 * padded + padded;
+    // row of force sums (3 components), a row of zeros, and for float springs three rows of
+    // v in float (9 float rows, in the room of 5 double rows).
+    return 3 * 6 * padded + 3 * max_directions * 3 * padded + 3 * padded + padded + 5 * padded;
 }
 
 // Writes the total force on every particle of rows [row_begin, row_end) — or, for a fused

@@ -20,10 +20,13 @@
 //
 // The spring forces and their sums are of type Real: double, or float for the fused step's
 // single-precision forces (Job::single_precision_springs). In float the differences of the
-// ends' positions and velocities are still taken in double and only then rounded, so a
-// spring's length keeps float's relative precision (about 6e-8 of the length) wherever the
-// sheet is, rather than float's precision of a coordinate a metre from the origin; the state
-// and the update stay in double. With Real = double every operation is the one it always was.
+// ends' positions are still taken in double and only then rounded, so a spring's length keeps
+// float's relative precision (about 6e-8 of the length) wherever the sheet is, rather than
+// float's precision of a coordinate a metre from the origin. The dashpot's velocities are
+// rounded to float once a row and their differences taken in float: that rounding is
+// relative to the velocities, and moves the damping force by far less than the tension's
+// own float rounding. The state and the update stay in double. With Real = double every
+// operation is the one it always was.
 
 template <class T>
 T* ring_row(T* base, std::size_t row_stride, int row) {
@@ -42,6 +45,15 @@ void load_state_row(const Job& job, int row, double* state_ring, std::size_t pad
     deinterleave(v, slot + 3 * padded, slot + 4 * padded, slot + 5 * padded, cols);
 }
 
+// The row's velocities rounded to float, for the float springs' dashpots: component k of row
+// slot s at velocity_ring + (s * 3 + k) * padded, laid out as the state ring's doubles.
+void round_velocity_row(int row, const double* state_ring, float* velocity_ring,
+                        std::size_t padded) {
+    const double* __restrict from = ring_row(state_ring, 6 * padded, row) + 3 * padded;
+    float* __restrict to = ring_row(velocity_ring, 3 * padded, row);
+    for (std::size_t c = 0; c < 3 * padded; ++c) to[c] = static_cast<float>(from[c]);
+}
+
 // A spring pushes along its length when l² is above this: any positive double; in float,
 // above the least normal float, so that 1/l² is finite.
 template <class Real>
@@ -53,8 +65,8 @@ constexpr Real shortest_length_squared = std::is_same_v<Real, float>
 // out[0..3][padded) (padding and columns without a spring left at zero).
 template <class Real>
 void spring_row(const Job& job, const Direction& direction, int row, double* state_ring,
-                std::size_t padded, Real* __restrict out_x, Real* __restrict out_y,
-                Real* __restrict out_z) {
+                const float* velocity_ring, std::size_t padded, Real* __restrict out_x,
+                Real* __restrict out_y, Real* __restrict out_z) {
     const int cols = job.cols;
     const int other_row = row + direction.row_step;
     const int dc = direction.col_step;
@@ -73,15 +85,27 @@ void spring_row(const Job& job, const Direction& direction, int row, double* sta
     const double* __restrict xa = a;
     const double* __restrict ya = a + padded;
     const double* __restrict za = a + 2 * padded;
-    const double* __restrict ua = a + 3 * padded;
-    const double* __restrict va = a + 4 * padded;
-    const double* __restrict wa = a + 5 * padded;
+    // The dashpot's velocities: the state's doubles, or for float springs their float copy
+    // (round_velocity_row), so that no difference of velocities is converted spring by spring.
+    using Velocity = std::conditional_t<std::is_same_v<Real, float>, float, double>;
+    const Velocity* velocity_a;
+    const Velocity* velocity_b;
+    if constexpr (std::is_same_v<Real, float>) {
+        velocity_a = ring_row(velocity_ring, 3 * padded, row) + row_padding;
+        velocity_b = ring_row(velocity_ring, 3 * padded, other_row) + row_padding + dc;
+    } else {
+        velocity_a = a + 3 * padded;
+        velocity_b = b + 3 * padded;
+    }
+    const Velocity* __restrict ua = velocity_a;
+    const Velocity* __restrict va = velocity_a + padded;
+    const Velocity* __restrict wa = velocity_a + 2 * padded;
     const double* __restrict xb = b;
     const double* __restrict yb = b + padded;
     const double* __restrict zb = b + 2 * padded;
-    const double* __restrict ub = b + 3 * padded;
-    const double* __restrict vb = b + 4 * padded;
-    const double* __restrict wb = b + 5 * padded;
+    const Velocity* __restrict ub = velocity_b;
+    const Velocity* __restrict vb = velocity_b + padded;
+    const Velocity* __restrict wb = velocity_b + 2 * padded;
     const std::size_t first = static_cast<std::size_t>(row) * static_cast<std::size_t>(cols);
     const double* __restrict rest = direction.rest_lengths + first;
     const auto k = static_cast<Real>(direction.stiffness);
@@ -226,6 +250,13 @@ SweepFlags force_rows_of(const Job& job, int row_begin, int row_end, double* scr
     Real* sum_rows = spring_ring + 3 * spring_row_stride;  // 3 components of one row
     Real* zero_row = sum_rows + 3 * padded;                // stays all zeros
     for (std::size_t c = 0; c < padded; ++c) zero_row[c] = Real(0);
+    // For float springs, 3 rows of the velocities in float, after the zeros.
+    float* velocity_ring = reinterpret_cast<float*>(zero_row + padded);
+    auto load_row = [&](int r) {
+        load_state_row(job, r, state_ring, padded);
+        if constexpr (std::is_same_v<Real, float>)
+            round_velocity_row(r, state_ring, velocity_ring, padded);
+    };
     auto spring_force = [&](int row, int k, int component) {
         return ring_row(spring_ring, spring_row_stride, row) +
                (static_cast<std::size_t>(k) * 3 + static_cast<std::size_t>(component)) * padded;
@@ -234,13 +265,12 @@ SweepFlags force_rows_of(const Job& job, int row_begin, int row_end, double* scr
     // Springs reach two rows down: the band's particles also receive the springs that start
     // on the two rows above it, recomputed here rather than shared between threads.
     const int first_spring_row = row_begin >= 2 ? row_begin - 2 : 0;
-    for (int r = first_spring_row; r < first_spring_row + 2 && r < job.rows; ++r)
-        load_state_row(job, r, state_ring, padded);
+    for (int r = first_spring_row; r < first_spring_row + 2 && r < job.rows; ++r) load_row(r);
     for (int row = first_spring_row; row < row_end; ++row) {
-        if (row + 2 < job.rows) load_state_row(job, row + 2, state_ring, padded);
+        if (row + 2 < job.rows) load_row(row + 2);
         for (int k = 0; k < job.direction_count; ++k)
-            spring_row(job, job.directions[k], row, state_ring, padded, spring_force(row, k, 0),
-                       spring_force(row, k, 1), spring_force(row, k, 2));
+            spring_row(job, job.directions[k], row, state_ring, velocity_ring, padded,
+                       spring_force(row, k, 0), spring_force(row, k, 1), spring_force(row, k, 2));
         if (row < row_begin) continue;
 
         // Gather, per component in rows of the scratch: external forces, the springs

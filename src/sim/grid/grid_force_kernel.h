@@ -15,11 +15,12 @@ inline constexpr int max_directions = 6;
 inline constexpr int row_padding = 2;
 
 struct Direction {
-    int row_step;                // dr
-    int col_step;                // dc
-    double stiffness;            // N/m
-    double damping;              // N·s/m
-    const double* rest_lengths;  // m, per start particle; negative: no live spring there
+    int row_step;                     // dr
+    int col_step;                     // dc
+    double stiffness;                 // N/m
+    double damping;                   // N·s/m
+    const double* rest_lengths;       // m, per start particle; negative: no live spring there
+    const float* rest_lengths_float;  // the same rounded to float (for float springs)
 };
 
 struct Job {

@@ -107,7 +107,13 @@ void spring_row(const Job& job, const Direction& direction, int row, double* sta
     const Velocity* __restrict vb = velocity_b + padded;
     const Velocity* __restrict wb = velocity_b + 2 * padded;
     const std::size_t first = static_cast<std::size_t>(row) * static_cast<std::size_t>(cols);
-    const double* __restrict rest = direction.rest_lengths + first;
+    // The rest lengths in Real: float springs read their float copy (the same values as
+    // rounding each double here).
+    const Real* __restrict rest;
+    if constexpr (std::is_same_v<Real, float>)
+        rest = direction.rest_lengths_float + first;
+    else
+        rest = direction.rest_lengths + first;
     const auto k = static_cast<Real>(direction.stiffness);
     const auto damping = static_cast<Real>(direction.damping);
     Real* __restrict fx = out_x + row_padding;

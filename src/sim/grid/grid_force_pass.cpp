@@ -47,9 +47,12 @@ bool describe_stencil(const Cloth& cloth, std::span<const Vec3> positions, grid_
     for (const GridStencilDirection& direction : cloth.topology().grid_stencil.directions) {
         if (job.direction_count == grid_kernel::max_directions) return false;
         const SpringGroup& group = cloth.topology().spring_groups[direction.group];
-        job.directions[job.direction_count++] = {direction.row_step, direction.col_step,
-                                                 group.stiffness, group.damping,
-                                                 direction.rest_lengths.data()};
+        job.directions[job.direction_count++] = {direction.row_step,
+                                                 direction.col_step,
+                                                 group.stiffness,
+                                                 group.damping,
+                                                 direction.rest_lengths.data(),
+                                                 direction.rest_lengths_float.data()};
     }
     return true;
 }

@@ -67,6 +67,9 @@ void build_grid_stencil(Cloth& cloth) {
         }
         built.group_sizes.push_back(group.springs.size());
     }
+    for (GridStencilDirection& direction : built.directions)
+        direction.rest_lengths_float.assign(direction.rest_lengths.begin(),
+                                            direction.rest_lengths.end());
     stencil = std::move(built);
 }
 

@@ -29,6 +29,9 @@ struct GridStencilDirection {
     // (no_spring) where none does or it is dead. One array rather than lengths plus flags:
     // the force pass reads it for every spring, and at 256² each array is 3 MB.
     std::vector<double> rest_lengths;
+    // The same rounded to float, for the force pass's float springs (grid_force_kernel.h):
+    // read as they are instead of converted spring by spring, and half the bytes.
+    std::vector<float> rest_lengths_float;
 };
 
 inline constexpr double no_spring = -1.0;  // the rest length that marks a dead spring

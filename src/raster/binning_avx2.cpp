@@ -50,6 +50,8 @@ void classify_for_binning_avx2(const TriangleIndices* triangles, std::uint32_t v
     if (vertex_count == 0 || vertex_count > largest_gathered) {
         for (int lane = 0; lane < binning_group_size; ++lane)
             group.kind[lane] = BinningGroup::undecided;
+        group.tiny_lanes = group.box_lanes = 0;
+        group.undecided_lanes = (1u << binning_group_size) - 1;
         return;
     }
     // The eight triangles' 24 indices are contiguous: three loads, then each corner's eight
@@ -258,6 +260,13 @@ inline void classify_lanes(__m256i valid, const __m256i (&code)[3], __m256i (&x)
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(group.x_begin), x_begin);
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(group.y_begin), y_begin);
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(group.y_end), y_end);
+    auto lanes_of = [&](int kind_value) {
+        return static_cast<unsigned>(_mm256_movemask_ps(
+            _mm256_castsi256_ps(_mm256_cmpeq_epi32(kind, _mm256_set1_epi32(kind_value)))));
+    };
+    group.tiny_lanes = lanes_of(BinningGroup::tiny);
+    group.box_lanes = lanes_of(BinningGroup::box_rows);
+    group.undecided_lanes = lanes_of(BinningGroup::undecided);
     for (int lane = 0; lane < binning_group_size; ++lane) {
         group.kind[lane] = static_cast<std::uint8_t>(lanes[0][lane]);
         group.covered[lane] = static_cast<std::uint8_t>(lanes[1][lane]);
@@ -273,12 +282,16 @@ void classify_for_binning_avx2(const TriangleIndices*, std::uint32_t, const std:
                                const WindowVertex*, int, int, BinningGroup& group) {
     for (int lane = 0; lane < binning_group_size; ++lane)
         group.kind[lane] = BinningGroup::undecided;
+    group.tiny_lanes = group.box_lanes = 0;
+    group.undecided_lanes = (1u << binning_group_size) - 1;
 }
 
 void classify_grid_group_avx2(std::size_t, int, const std::uint32_t*, const std::int32_t*,
                               const std::int32_t*, int, int, BinningGroup& group) {
     for (int lane = 0; lane < binning_group_size; ++lane)
         group.kind[lane] = BinningGroup::undecided;
+    group.tiny_lanes = group.box_lanes = 0;
+    group.undecided_lanes = (1u << binning_group_size) - 1;
 }
 
 #endif

@@ -31,6 +31,10 @@ struct BinningGroup {
         undecided = 3,      // for the scalar path
     };
     std::uint8_t kind[binning_group_size];
+    // The same decisions as lane masks (bit i for lane i), so that binning visits only the
+    // lanes that put something in a band: a sheet seen whole has many triangles that cover
+    // no pixel centre.
+    unsigned tiny_lanes = 0, box_lanes = 0, undecided_lanes = 0;
     std::uint8_t covered[binning_group_size];  // bit (row · 2 + column) of the box
     std::uint8_t front_facing[binning_group_size];
     std::int32_t x_begin[binning_group_size], y_begin[binning_group_size];

@@ -375,7 +375,9 @@ void bin_triangle_run(const PreparedMesh& prepared, std::size_t begin, std::size
             fragment.x = static_cast<std::uint16_t>(x_begin + k % tiny_box_side);
             fragment.y = static_cast<std::uint16_t>(y);
             weights_at(k, fragment.weight);
-            fragments[band_of(y)].push_back(fragment);
+            // A covered centre lies inside the viewport, so its band needs no clamp.
+            fragments[band_shift >= 0 ? y >> band_shift : y / bands.band_height].push_back(
+                fragment);
         }
     };
     BinnedCoverage coverage;
@@ -424,23 +426,25 @@ void bin_triangle_run(const PreparedMesh& prepared, std::size_t begin, std::size
             else
                 classify_for_binning_avx2(triangles + index, static_cast<std::uint32_t>(count),
                                           outcodes, window, prepared.width, prepared.height, group);
-            int undecided = 0;
-            for (int lane = 0; lane < binning_group_size; ++lane)
-                undecided += group.kind[lane] == BinningGroup::undecided ? 1 : 0;
-            if (undecided >= mostly_undecided) skipped = groups_skipped;
-            for (int lane = 0; lane < binning_group_size; ++lane) {
-                if (group.kind[lane] == BinningGroup::undecided) {
-                    bin_one(index + lane);
-                } else if (group.kind[lane] == BinningGroup::box_rows) {
-                    add_to_bands(index + lane, band_of(group.y_begin[lane]),
-                                 band_of(group.y_end[lane] - 1));
-                } else if (group.kind[lane] == BinningGroup::tiny) {
+            if (std::popcount(group.undecided_lanes) >= mostly_undecided) skipped = groups_skipped;
+            // Lanes in order, as the scalar path takes the triangles; those that draw nothing
+            // are not visited.
+            for (unsigned active = group.tiny_lanes | group.box_lanes | group.undecided_lanes;
+                 active != 0; active &= active - 1) {
+                const int lane = std::countr_zero(active);
+                const unsigned bit = 1u << lane;
+                if ((group.tiny_lanes & bit) != 0) {
                     add_fragments(index + lane, group.front_facing[lane] != 0, group.x_begin[lane],
                                   group.y_begin[lane], group.covered[lane],
                                   [&](int k, float(&weight)[3]) {
                                       for (int i = 0; i < 3; ++i)
                                           weight[i] = group.weight[k][i][lane];
                                   });
+                } else if ((group.box_lanes & bit) != 0) {
+                    add_to_bands(index + lane, band_of(group.y_begin[lane]),
+                                 band_of(group.y_end[lane] - 1));
+                } else {
+                    bin_one(index + lane);
                 }
             }
         }

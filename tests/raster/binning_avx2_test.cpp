@@ -22,6 +22,19 @@
 namespace weft::raster {
 namespace {
 
+// The lane masks say what kind[] says, lane by lane (binning visits lanes by the masks).
+void expect_lane_masks_match_kinds(const BinningGroup& group, std::size_t first) {
+    for (int lane = 0; lane < binning_group_size; ++lane) {
+        const unsigned bit = 1u << lane;
+        EXPECT_EQ((group.tiny_lanes & bit) != 0, group.kind[lane] == BinningGroup::tiny)
+            << "triangle " << first + static_cast<std::size_t>(lane);
+        EXPECT_EQ((group.box_lanes & bit) != 0, group.kind[lane] == BinningGroup::box_rows)
+            << "triangle " << first + static_cast<std::size_t>(lane);
+        EXPECT_EQ((group.undecided_lanes & bit) != 0, group.kind[lane] == BinningGroup::undecided)
+            << "triangle " << first + static_cast<std::size_t>(lane);
+    }
+}
+
 TEST(BinningAvx2, DecidesEachLaneAsTheScalarBinningDoes) {
     if (!avx2_supported()) GTEST_SKIP() << "this CPU or build has no AVX2";
     constexpr int width = 40, height = 30;
@@ -80,6 +93,7 @@ TEST(BinningAvx2, DecidesEachLaneAsTheScalarBinningDoes) {
         classify_for_binning_avx2(triangles.data() + first,
                                   static_cast<std::uint32_t>(window.size()), outcodes.data(),
                                   window.data(), width, height, group);
+        expect_lane_masks_match_kinds(group, first);
         for (int lane = 0; lane < binning_group_size; ++lane) {
             const TriangleIndices& t = triangles[first + lane];
             const bool in_range = t[2] < window.size();
@@ -186,6 +200,8 @@ TEST(BinningAvx2, LoadsAWholeGridsCornersAsItGathersThem) {
                 classify_for_binning_avx2(sheet.triangles.data() + first, count,
                                           prepared.outcodes.data(), prepared.window.data(), width,
                                           height, gathered);
+                expect_lane_masks_match_kinds(loaded, first);
+                expect_lane_masks_match_kinds(gathered, first);
                 for (int lane = 0; lane < binning_group_size; ++lane) {
                     ++compared;
                     ASSERT_EQ(loaded.kind[lane], gathered.kind[lane]) << first + lane;

@@ -1,6 +1,7 @@
 // Binning's classification of eight triangles at once (binning_avx2.h), built with AVX2.
 #include "raster/binning_avx2.h"
 
+#include <bit>
 #include <cstddef>
 
 #include "raster/clipping.h"
@@ -52,6 +53,7 @@ void classify_for_binning_avx2(const TriangleIndices* triangles, std::uint32_t v
             group.kind[lane] = BinningGroup::undecided;
         group.tiny_lanes = group.box_lanes = 0;
         group.undecided_lanes = (1u << binning_group_size) - 1;
+        group.undecided_count = binning_group_size;
         return;
     }
     // The eight triangles' 24 indices are contiguous: three loads, then each corner's eight
@@ -267,6 +269,8 @@ inline void classify_lanes(__m256i valid, const __m256i (&code)[3], __m256i (&x)
     group.tiny_lanes = lanes_of(BinningGroup::tiny);
     group.box_lanes = lanes_of(BinningGroup::box_rows);
     group.undecided_lanes = lanes_of(BinningGroup::undecided);
+    // Counted here, where the build has the population count instruction.
+    group.undecided_count = std::popcount(group.undecided_lanes);
     for (int lane = 0; lane < binning_group_size; ++lane) {
         group.kind[lane] = static_cast<std::uint8_t>(lanes[0][lane]);
         group.covered[lane] = static_cast<std::uint8_t>(lanes[1][lane]);
@@ -284,6 +288,7 @@ void classify_for_binning_avx2(const TriangleIndices*, std::uint32_t, const std:
         group.kind[lane] = BinningGroup::undecided;
     group.tiny_lanes = group.box_lanes = 0;
     group.undecided_lanes = (1u << binning_group_size) - 1;
+    group.undecided_count = binning_group_size;
 }
 
 void classify_grid_group_avx2(std::size_t, int, const std::uint32_t*, const std::int32_t*,
@@ -292,6 +297,7 @@ void classify_grid_group_avx2(std::size_t, int, const std::uint32_t*, const std:
         group.kind[lane] = BinningGroup::undecided;
     group.tiny_lanes = group.box_lanes = 0;
     group.undecided_lanes = (1u << binning_group_size) - 1;
+    group.undecided_count = binning_group_size;
 }
 
 #endif

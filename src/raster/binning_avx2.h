@@ -35,6 +35,7 @@ struct BinningGroup {
     // lanes that put something in a band: a sheet seen whole has many triangles that cover
     // no pixel centre.
     unsigned tiny_lanes = 0, box_lanes = 0, undecided_lanes = 0;
+    int undecided_count = 0;                   // lanes in undecided_lanes
     std::uint8_t covered[binning_group_size];  // bit (row · 2 + column) of the box
     std::uint8_t front_facing[binning_group_size];
     std::int32_t x_begin[binning_group_size], y_begin[binning_group_size];

@@ -23,6 +23,7 @@
 #include <cstdint>
 
 #include "raster/clipping.h"
+#include "raster/framebuffer.h"
 #include "raster/triangle_setup.h"
 
 namespace weft::raster {
@@ -47,7 +48,7 @@ struct BlockTriangle {
     // Varying k of setup vertex i divided by its w (the rasterizer's varying_over_w).
     const float* varying_over_w[3];
     int varying_count;
-    float* depths;        // the framebuffer's depth buffer
+    DepthRows depths;     // the framebuffer's
     std::uint32_t width;  // the framebuffer's width, pixels
     bool depth_test;
     bool depth_write;

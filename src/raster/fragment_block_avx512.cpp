@@ -165,7 +165,7 @@ int traverse_block(const BlockTriangle& triangle, int y, const FragmentSink& sin
         static_cast<std::uint32_t>(y) * width + static_cast<std::uint32_t>(setup.x_begin);
     float* row_depths[Lanes::rows];
     for (int r = 0; r < Lanes::rows; ++r)
-        row_depths[r] = triangle.depths + first_pixel + (r < rows ? r * width : 0);
+        row_depths[r] = &triangle.depths[first_pixel + (r < rows ? r * width : 0)];
     auto row_mask = [](Mask mask, int r) {
         return static_cast<__mmask8>((mask >> (fragment_block_columns * r)) & 0xF);
     };

@@ -125,7 +125,7 @@ void walk_line(Framebuffer& framebuffer, const PreparedLine& line, const PixelRe
 
     const std::size_t width = static_cast<std::size_t>(framebuffer.width());
     Rgba8* const colours = framebuffer.colours().data();
-    float* const depths = framebuffer.depths().data();
+    const DepthRows depths = framebuffer.depth_rows();
     const bool depth_test = style.depth_test, depth_write = style.depth_write;
     const float inverse_length = 1.0f / length;
     const float depth_start = a.window.z, depth_delta = b.window.z - a.window.z;

@@ -252,6 +252,8 @@ void draw_prepared_with(Framebuffer& framebuffer, const PreparedMesh& prepared,
     const Shader shader{surface, framebuffer.colours().data(), &queue};
     RasterState state;
     state.scissor = bounds;
+    const DepthRows depths = framebuffer.depth_rows();
+    const auto width = static_cast<std::size_t>(framebuffer.width());
     // Binned fragments are depth-tested one by one, in order, and their varyings interpolated
     // in groups of eight where the lanes hold a vertex's varyings; a group goes into the
     // queue before anything drawn after its fragments, so the queue's order is unchanged.
@@ -291,7 +293,7 @@ void draw_prepared_with(Framebuffer& framebuffer, const PreparedMesh& prepared,
             const WindowVertex* const vertex[3] = {window + v0, window + v1, window + v2};
             if (grouped) {
                 const BinnedFragmentDepth tested =
-                    test_binned_fragment_depth(framebuffer, state, fragment, vertex);
+                    test_binned_fragment_depth(depths, width, state, fragment, vertex);
                 if (!tested.passed) return;
                 const int j = group.count++;
                 group.pixel[j] = static_cast<std::uint32_t>(tested.index);
@@ -426,7 +428,7 @@ void bin_triangle_run(const PreparedMesh& prepared, std::size_t begin, std::size
             else
                 classify_for_binning_avx2(triangles + index, static_cast<std::uint32_t>(count),
                                           outcodes, window, prepared.width, prepared.height, group);
-            if (std::popcount(group.undecided_lanes) >= mostly_undecided) skipped = groups_skipped;
+            if (group.undecided_count >= mostly_undecided) skipped = groups_skipped;
             // Lanes in order, as the scalar path takes the triangles; those that draw nothing
             // are not visited.
             for (unsigned active = group.tiny_lanes | group.box_lanes | group.undecided_lanes;

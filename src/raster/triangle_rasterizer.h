@@ -112,7 +112,7 @@ void traverse_blocks(Framebuffer& framebuffer, const RasterState& state, const T
     const BlockTriangle triangle{&setup,
                                  {varying_over_w[0], varying_over_w[1], varying_over_w[2]},
                                  varying_count,
-                                 framebuffer.depths().data(),
+                                 framebuffer.depth_rows(),
                                  static_cast<std::uint32_t>(framebuffer.width()),
                                  state.depth_test,
                                  state.depth_write};
@@ -143,7 +143,7 @@ void traverse_blocks(Framebuffer& framebuffer, const RasterState& state, const T
 template <class Shader, bool CopyVaryings = true>
 struct PixelShading {
     Rgba8* colours;
-    float* depths;
+    DepthRows depths;
     std::size_t width;
     int varying_count;
     bool depth_test, depth_write;
@@ -159,7 +159,7 @@ struct PixelShading {
     PixelShading(Framebuffer& framebuffer, const RasterState& state, const TriangleSetup& setup,
                  const float* const (&given_over_w)[3])
         : colours(framebuffer.colours().data()),
-          depths(framebuffer.depths().data()),
+          depths(framebuffer.depth_rows()),
           width(static_cast<std::size_t>(framebuffer.width())),
           varying_count(varying_count_of<Shader>(state)),
           depth_test(state.depth_test),
@@ -390,18 +390,28 @@ struct BinnedFragmentDepth {
     bool passed = false;
 };
 
-inline BinnedFragmentDepth test_binned_fragment_depth(Framebuffer& framebuffer,
+// The same, given the framebuffer's depths (Framebuffer::depth_rows) and width, for a
+// caller that tests many fragments of one framebuffer.
+inline BinnedFragmentDepth test_binned_fragment_depth(const DepthRows& depths, std::size_t width,
                                                       const RasterState& state,
                                                       const BinnedFragment& binned,
                                                       const WindowVertex* const (&vertex)[3]) {
     const float b0 = binned.weight[0], b1 = binned.weight[1], b2 = binned.weight[2];
     BinnedFragmentDepth result;
     result.depth = b0 * vertex[0]->depth + b1 * vertex[1]->depth + b2 * vertex[2]->depth;
-    result.index = std::size_t{binned.y} * static_cast<std::size_t>(framebuffer.width()) + binned.x;
-    float* const depths = framebuffer.depths().data();
+    result.index = std::size_t{binned.y} * width + binned.x;
     result.passed = !state.depth_test || result.depth < depths[result.index];
     if (result.passed && state.depth_write) depths[result.index] = result.depth;
     return result;
+}
+
+inline BinnedFragmentDepth test_binned_fragment_depth(Framebuffer& framebuffer,
+                                                      const RasterState& state,
+                                                      const BinnedFragment& binned,
+                                                      const WindowVertex* const (&vertex)[3]) {
+    return test_binned_fragment_depth(framebuffer.depth_rows(),
+                                      static_cast<std::size_t>(framebuffer.width()), state, binned,
+                                      vertex);
 }
 
 // The clip w at a binned fragment's pixel centre, from its vertices' 1/w.

@@ -142,25 +142,41 @@ void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera
         grid.centre_colour = {190, 150, 110, 255};
         raster::prepare_plane_grid(framebuffer, camera, grid, line_depth_bias, grid_lines);
     }
+    // Each thread draws its bands through a band view of the frame, whose depths are its own
+    // and stay in its cache. They go into the frame's once the band is done only if the
+    // lines drawn over the whole frame test against them, or the caller keeps them: writing
+    // them out would cost much of what the view saves.
+    const bool lines_drawn =
+        options.wireframe || options.strain_springs || options.particles ||
+        ((options.shaded || options.wireframe) && !view.lone_springs().empty());
+    const bool depths_kept = options.keep_depths || lines_drawn;
+    const int threads = pool ? pool->thread_count() : 1;
     auto draw_band = [&](int band) {
+        // The depths belong to the thread, not to the frame or to a slice of the pool's
+        // loop: whichever thread claims a slice, the storage it draws into is the one its
+        // core cached for its last band.
+        thread_local std::vector<float> depth_storage;
         const raster::PixelRect rect{0, band * frame_band_rows, width,
                                      std::min((band + 1) * frame_band_rows, height)};
-        framebuffer.clear(options.background, raster::Framebuffer::far_depth, rect);
+        raster::Framebuffer target =
+            raster::Framebuffer::band_view(framebuffer, rect.y_begin, rect.y_end, depth_storage);
+        target.clear(options.background, raster::Framebuffer::far_depth, rect);
         if (onto_ground) {
             for (std::size_t k = 0; k < sphere_count; ++k)
-                raster::draw_flat_mesh(framebuffer, sphere_shadows[k], options.shadow_colour, rect);
+                raster::draw_flat_mesh(target, sphere_shadows[k], options.shadow_colour, rect);
             if (cloth_drawn)
-                raster::draw_flat_band(framebuffer, cloth_shadow, shadow_bands, band,
+                raster::draw_flat_band(target, cloth_shadow, shadow_bands, band,
                                        options.shadow_colour);
         }
         raster::LineStyle lines;
         lines.scissor = rect;
-        raster::draw_prepared_lines(framebuffer, grid_lines, lines);
+        raster::draw_prepared_lines(target, grid_lines, lines);
         for (std::size_t k = 0; k < sphere_count; ++k)
-            raster::draw_prepared_mesh(framebuffer, spheres[k], collider_style, lighting, rect);
+            raster::draw_prepared_mesh(target, spheres[k], collider_style, lighting, rect);
         if (cloth_drawn)
-            raster::draw_prepared_band(framebuffer, cloth_mesh, cloth_bands, band, options.surface,
+            raster::draw_prepared_band(target, cloth_mesh, cloth_bands, band, options.surface,
                                        lighting);
+        if (depths_kept) target.write_back_depths();
     };
 
     // Lines and points come last, over the whole frame on the calling thread: every band
@@ -184,7 +200,6 @@ void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera
                                 lines);
     };
 
-    const int threads = pool ? pool->thread_count() : 1;
     if (threads <= 1) {
         for (int band = 0; band < band_count; ++band) draw_band(band);
     } else {

@@ -26,6 +26,8 @@ struct FrameOptions {
     bool light_over_shoulder = true;  // overrides lighting.direction_to_light to follow the camera
     raster::Rgba8 background{28, 30, 36, 255};
     raster::Rgba8 shadow_colour{16, 17, 21, 255};  // the background in shadow
+    // Whether the framebuffer's depths must hold the frame's afterwards (render_frame).
+    bool keep_depths = false;
 
     static raster::SurfaceStyle default_surface();
 };
@@ -41,7 +43,10 @@ float ground_height_below(const Cloth& cloth, std::span<const Collider> collider
 // ground grid). The framebuffer is drawn in bands of 32 rows, each whole (clear, grids,
 // spheres, the cloth's triangles binned to it) by one thread — with a pool of several, the
 // threads claim bands in turn — then the lines and points over the whole frame: the image
-// is the same, pixel for pixel, whatever the number of threads.
+// is the same, pixel for pixel, whatever the number of threads. A band's depths stay in its
+// thread's cache; they are written to the framebuffer only where lines or points are drawn
+// over the frame, or with keep_depths. Otherwise the framebuffer's depths are left as they
+// were.
 void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera,
                   const Cloth& cloth, ClothView& view, const FrameOptions& options,
                   float ground_height, std::span<const Collider> colliders = {},

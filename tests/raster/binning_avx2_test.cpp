@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -24,6 +25,7 @@ namespace {
 
 // The lane masks say what kind[] says, lane by lane (binning visits lanes by the masks).
 void expect_lane_masks_match_kinds(const BinningGroup& group, std::size_t first) {
+    EXPECT_EQ(group.undecided_count, std::popcount(group.undecided_lanes)) << "triangle " << first;
     for (int lane = 0; lane < binning_group_size; ++lane) {
         const unsigned bit = 1u << lane;
         EXPECT_EQ((group.tiny_lanes & bit) != 0, group.kind[lane] == BinningGroup::tiny)

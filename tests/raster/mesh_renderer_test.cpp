@@ -272,24 +272,39 @@ TEST(MeshRenderer, RejectsMismatchedArraysAndSkipsBadIndices) {
     EXPECT_EQ(fb.colour(11, 11), background);                          // lower right: skipped
 }
 
-TEST(MeshRenderer, ScissorTilesReproduceTheWholeImage) {
+TEST(MeshRenderer, ScissorTilesAndBandViewsReproduceTheWholeImage) {
     const TriangleMesh sphere = make_uv_sphere(24, 12);
     const Camera camera = make_camera({0.5f, 0.8f, 2.2f}, {0, 0, 0}, 50.0f);
     SurfaceStyle style;
     style.pattern = SurfacePattern::checker;
-    Framebuffer whole(70, 50), tiled(70, 50);
+    Framebuffer whole(71, 50), tiled(71, 50), banded(71, 50);
     whole.clear(background);
     tiled.clear(background);
     ASSERT_TRUE(draw_mesh(whole, camera, sphere.view(), style, Lighting{}));
+    ASSERT_LT(*std::min_element(whole.depths().begin(), whole.depths().end()), 1.0f);
     for (int y = 0; y < 50; y += 16) {
-        for (int x = 0; x < 70; x += 16) {
+        for (int x = 0; x < 71; x += 16) {
             ASSERT_TRUE(draw_mesh(tiled, camera, sphere.view(), style, Lighting{},
                                   PixelRect{x, y, x + 16, y + 16}));
         }
     }
-    EXPECT_TRUE(
-        std::equal(whole.colours().begin(), whole.colours().end(), tiled.colours().begin()));
-    EXPECT_TRUE(std::equal(whole.depths().begin(), whole.depths().end(), tiled.depths().begin()));
+    // Each band drawn through a view with depths of its own, given no scissor: the view's
+    // bounds keep the triangles inside its rows, and its depths go back to the frame.
+    banded.clear(Rgba8{1, 2, 3, 4}, 0.0f);  // anything the bands fail to draw shows
+    std::vector<float> depth_storage;
+    for (int y = 0; y < 50; y += 13) {
+        Framebuffer band = Framebuffer::band_view(banded, y, std::min(y + 13, 50), depth_storage);
+        EXPECT_EQ(band.bounds(), (PixelRect{0, y, 71, std::min(y + 13, 50)}));
+        band.clear(background);
+        ASSERT_TRUE(draw_mesh(band, camera, sphere.view(), style, Lighting{}));
+        band.write_back_depths();
+    }
+    for (const Framebuffer* drawn : {&tiled, &banded}) {
+        EXPECT_TRUE(
+            std::equal(whole.colours().begin(), whole.colours().end(), drawn->colours().begin()));
+        EXPECT_TRUE(
+            std::equal(whole.depths().begin(), whole.depths().end(), drawn->depths().begin()));
+    }
 }
 
 TEST(Sphere, SilhouetteMatchesTheAnalyticDiscAndNormalsPointOutwards) {

@@ -16,10 +16,12 @@ struct Frame {
     std::vector<float> depths;
 };
 
-Frame draw(const Simulation& simulation, const FrameOptions& options, int width, int height,
+// The frame with its depths kept (FrameOptions::keep_depths), so that they can be compared.
+Frame draw(const Simulation& simulation, FrameOptions options, int width, int height,
            WorkerPool* pool, const Scene* camera_scene = nullptr) {
     raster::Framebuffer framebuffer(width, height);
     ClothView view(simulation.cloth());
+    options.keep_depths = true;
     render_frame(framebuffer, scene_camera(camera_scene ? *camera_scene : simulation.scene()),
                  simulation.cloth(), view, options,
                  ground_height_below(simulation.cloth(), simulation.colliders()),
@@ -52,6 +54,44 @@ TEST(FrameRenderer, BandsOnSeveralThreadsDrawTheSameImageAsOneThread) {
                     << threads << " threads, " << width << "x" << height;
                 EXPECT_TRUE(banded.depths == one.depths)
                     << threads << " threads, " << width << "x" << height;
+            }
+        }
+    }
+}
+
+// Without keep_depths and with nothing drawn over the frame, the bands' depths stay with the
+// threads: the same colours, and the framebuffer's depths as they were.
+TEST(FrameRenderer, DepthsAreWrittenOutOnlyWhenKeptOrWhenLinesTestAgainstThem) {
+    SceneLoadResult loaded =
+        load_scene_file(WEFT_SOURCE_DIR "/assets/scenes/sheet_on_sphere.toml", {});
+    ASSERT_TRUE(loaded.ok());
+    Simulation simulation(*loaded.scene);
+    for (int s = 0; s < 100; ++s) simulation.step();
+    FrameOptions with_points;
+    with_points.particles = true;
+    for (const FrameOptions& options : {FrameOptions{}, with_points}) {
+        const Frame kept = draw(simulation, options, 160, 120, nullptr);
+        for (int threads : {1, 2}) {
+            WorkerPool pool(threads);
+            raster::Framebuffer framebuffer(160, 120);
+            framebuffer.clear(raster::Rgba8{0, 0, 0, 255}, 0.5f);
+            ClothView view(simulation.cloth());
+            render_frame(framebuffer, scene_camera(simulation.scene()), simulation.cloth(), view,
+                         options, ground_height_below(simulation.cloth(), simulation.colliders()),
+                         simulation.colliders(), &pool);
+            EXPECT_TRUE(
+                std::equal(kept.colours.begin(), kept.colours.end(), framebuffer.colours().begin()))
+                << threads << " threads";
+            if (options.particles) {
+                // The points are depth-tested against the surface: its depths were written.
+                EXPECT_TRUE(std::equal(kept.depths.begin(), kept.depths.end(),
+                                       framebuffer.depths().begin()))
+                    << threads << " threads";
+            } else {
+                EXPECT_EQ(
+                    std::count(framebuffer.depths().begin(), framebuffer.depths().end(), 0.5f),
+                    160 * 120)
+                    << threads << " threads";
             }
         }
     }

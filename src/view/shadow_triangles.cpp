@@ -61,13 +61,40 @@ void find_coarse_triangles(const Cloth& cloth, std::span<const raster::TriangleI
         if (cell >= 0 && triangles_in_cell[static_cast<std::size_t>(cell)] < 255)
             ++triangles_in_cell[static_cast<std::size_t>(cell)];
     }
-    // A block is whole when it lies inside the grid and each of its cells has both triangles.
-    const int block_rows = (rows - 1) / block_cells, block_cols = cell_cols / block_cells;
+    // Blocks of block_cells cells along each side, then one block of what is left at the far
+    // edge, so that a side not a multiple of block_cells keeps no strip of fine triangles.
+    // On an offset grid a block's height stays even: its left and right edges then join
+    // corners of the same shift, and it covers its cells' area exactly; an odd row left over
+    // keeps its own triangles.
+    const bool even_heights = cloth.odd_row_shift != 0.0;
+    auto block_edges = [&](int cells, bool even) {
+        std::vector<int> edges{0};
+        while (edges.back() + block_cells <= cells) edges.push_back(edges.back() + block_cells);
+        int rest = cells - edges.back();
+        if (even) rest -= rest % 2;
+        if (rest > 0) edges.push_back(edges.back() + rest);
+        return edges;  // block k spans [edges[k], edges[k + 1])
+    };
+    const std::vector<int> row_edges = block_edges(rows - 1, even_heights);
+    const std::vector<int> col_edges = block_edges(cell_cols, false);
+    const int block_rows = static_cast<int>(row_edges.size()) - 1;
+    const int block_cols = static_cast<int>(col_edges.size()) - 1;
+    // The block row (column) of each cell row (column), -1 past the last block.
+    auto block_of_line = [](const std::vector<int>& edges, int line_count) {
+        std::vector<int> block(static_cast<std::size_t>(line_count), -1);
+        for (std::size_t k = 0; k + 1 < edges.size(); ++k)
+            for (int line = edges[k]; line < edges[k + 1]; ++line)
+                block[static_cast<std::size_t>(line)] = static_cast<int>(k);
+        return block;
+    };
+    const std::vector<int> block_row_of = block_of_line(row_edges, rows - 1);
+    const std::vector<int> block_col_of = block_of_line(col_edges, cell_cols);
+    // A block is whole when each of its cells has both triangles.
     auto block_of_cell = [&](long cell) -> long {
-        const long row = cell / cell_cols, col = cell % cell_cols;
-        const long block_row = row / block_cells, block_col = col / block_cells;
-        if (block_row >= block_rows || block_col >= block_cols) return -1;
-        return block_row * block_cols + block_col;
+        const int block_row = block_row_of[static_cast<std::size_t>(cell / cell_cols)];
+        const int block_col = block_col_of[static_cast<std::size_t>(cell % cell_cols)];
+        if (block_row < 0 || block_col < 0) return -1;
+        return static_cast<long>(block_row) * block_cols + block_col;
     };
     std::vector<std::uint8_t> block_whole(static_cast<std::size_t>(block_rows * block_cols), 1);
     for (long cell = 0; cell < static_cast<long>(cell_count); ++cell) {
@@ -80,13 +107,16 @@ void find_coarse_triangles(const Cloth& cloth, std::span<const raster::TriangleI
         for (int block_col = 0; block_col < block_cols; ++block_col) {
             if (!block_whole[static_cast<std::size_t>(block_row * block_cols + block_col)])
                 continue;
-            const int top = block_row * block_cells, left = block_col * block_cells;
-            const int bottom = top + block_cells, right = left + block_cells;
+            const int top = row_edges[static_cast<std::size_t>(block_row)];
+            const int bottom = row_edges[static_cast<std::size_t>(block_row) + 1];
+            const int left = col_edges[static_cast<std::size_t>(block_col)];
+            const int right = col_edges[static_cast<std::size_t>(block_col) + 1];
             shadow.push_back({index(top, left), index(bottom, left), index(top, right)});
             shadow.push_back({index(top, right), index(bottom, left), index(bottom, right)});
         }
     }
-    // Everything else as it is: triangles of broken or edge blocks, and any outside a cell.
+    // Everything else as it is: triangles of broken blocks, of an offset grid's odd last row,
+    // and any outside a cell.
     for (const raster::TriangleIndices& t : intact) {
         const long cell = cell_of(t);
         const long block = cell >= 0 ? block_of_cell(cell) : -1;

@@ -1,8 +1,9 @@
 // The triangles a cloth's shadow is drawn from. A shadow is one flat colour, so a grid's
 // shadow needs none of its fine detail: wherever a block of b x b cells is whole, two
 // triangles across the block's corners cover what its 2 b² triangles do, up to how far the
-// cloth bends inside the block. Torn or cut blocks keep their own intact triangles, so the
-// shadow shows every hole.
+// cloth bends inside the block. The cells a side leaves over make one narrower block at the
+// far edge. Torn or cut blocks keep their own intact triangles, so the shadow shows every
+// hole.
 #pragma once
 
 #include <cstdint>

@@ -49,11 +49,7 @@ void classify_for_binning_avx2(const TriangleIndices* triangles, std::uint32_t v
     // Vertex indices, checked against the vertex count (an unsigned comparison).
     constexpr std::uint32_t largest_gathered = 0x7fffffffu / 6;
     if (vertex_count == 0 || vertex_count > largest_gathered) {
-        for (int lane = 0; lane < binning_group_size; ++lane)
-            group.kind[lane] = BinningGroup::undecided;
-        group.tiny_lanes = group.box_lanes = 0;
-        group.undecided_lanes = (1u << binning_group_size) - 1;
-        group.undecided_count = binning_group_size;
+        group.leave_all_undecided();
         return;
     }
     // The eight triangles' 24 indices are contiguous: three loads, then each corner's eight
@@ -255,10 +251,9 @@ inline void classify_lanes(__m256i valid, const __m256i (&code)[3], __m256i (&x)
                                 select(nothing, zero,
                                        select(larger, _mm256_set1_epi32(BinningGroup::box_rows),
                                               _mm256_set1_epi32(BinningGroup::tiny))));
-    alignas(32) std::int32_t lanes[4][binning_group_size];
-    _mm256_store_si256(reinterpret_cast<__m256i*>(lanes[0]), kind);
-    _mm256_store_si256(reinterpret_cast<__m256i*>(lanes[1]), covered);
-    _mm256_store_si256(reinterpret_cast<__m256i*>(lanes[2]), front);
+    alignas(32) std::int32_t lanes[2][binning_group_size];
+    _mm256_store_si256(reinterpret_cast<__m256i*>(lanes[0]), covered);
+    _mm256_store_si256(reinterpret_cast<__m256i*>(lanes[1]), front);
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(group.x_begin), x_begin);
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(group.y_begin), y_begin);
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(group.y_end), y_end);
@@ -272,9 +267,8 @@ inline void classify_lanes(__m256i valid, const __m256i (&code)[3], __m256i (&x)
     // Counted here, where the build has the population count instruction.
     group.undecided_count = std::popcount(group.undecided_lanes);
     for (int lane = 0; lane < binning_group_size; ++lane) {
-        group.kind[lane] = static_cast<std::uint8_t>(lanes[0][lane]);
-        group.covered[lane] = static_cast<std::uint8_t>(lanes[1][lane]);
-        group.front_facing[lane] = lanes[2][lane] != 0 ? 1 : 0;
+        group.covered[lane] = static_cast<std::uint8_t>(lanes[0][lane]);
+        group.front_facing[lane] = lanes[1][lane] != 0 ? 1 : 0;
     }
 }
 
@@ -284,20 +278,12 @@ inline void classify_lanes(__m256i valid, const __m256i (&code)[3], __m256i (&x)
 
 void classify_for_binning_avx2(const TriangleIndices*, std::uint32_t, const std::uint32_t*,
                                const WindowVertex*, int, int, BinningGroup& group) {
-    for (int lane = 0; lane < binning_group_size; ++lane)
-        group.kind[lane] = BinningGroup::undecided;
-    group.tiny_lanes = group.box_lanes = 0;
-    group.undecided_lanes = (1u << binning_group_size) - 1;
-    group.undecided_count = binning_group_size;
+    group.leave_all_undecided();
 }
 
 void classify_grid_group_avx2(std::size_t, int, const std::uint32_t*, const std::int32_t*,
                               const std::int32_t*, int, int, BinningGroup& group) {
-    for (int lane = 0; lane < binning_group_size; ++lane)
-        group.kind[lane] = BinningGroup::undecided;
-    group.tiny_lanes = group.box_lanes = 0;
-    group.undecided_lanes = (1u << binning_group_size) - 1;
-    group.undecided_count = binning_group_size;
+    group.leave_all_undecided();
 }
 
 #endif

@@ -30,10 +30,9 @@ struct BinningGroup {
         box_rows = 2,       // larger than tiny: may reach rows [y_begin, y_end)
         undecided = 3,      // for the scalar path
     };
-    std::uint8_t kind[binning_group_size];
-    // The same decisions as lane masks (bit i for lane i), so that binning visits only the
-    // lanes that put something in a band: a sheet seen whole has many triangles that cover
-    // no pixel centre.
+    // The decisions as lane masks (bit i for lane i; a lane in none draws nothing), so that
+    // binning visits only the lanes that put something in a band: a sheet seen whole has
+    // many triangles that cover no pixel centre.
     unsigned tiny_lanes = 0, box_lanes = 0, undecided_lanes = 0;
     int undecided_count = 0;                   // lanes in undecided_lanes
     std::uint8_t covered[binning_group_size];  // bit (row · 2 + column) of the box
@@ -43,6 +42,20 @@ struct BinningGroup {
     // The weight of setup vertex i at centre k (first, right, below, diagonal) of a tiny
     // triangle: bin_coverage's, to the bit.
     float weight[tiny_box_side * tiny_box_side][3][binning_group_size];
+
+    Kind kind(int lane) const {
+        const unsigned bit = 1u << lane;
+        if ((tiny_lanes & bit) != 0) return tiny;
+        if ((box_lanes & bit) != 0) return box_rows;
+        if ((undecided_lanes & bit) != 0) return undecided;
+        return draws_nothing;
+    }
+    // Every lane left to the scalar path.
+    void leave_all_undecided() {
+        tiny_lanes = box_lanes = 0;
+        undecided_lanes = (1u << binning_group_size) - 1;
+        undecided_count = binning_group_size;
+    }
 };
 
 // Classifies the eight triangles from `triangles` (of a mesh with `vertex_count` vertices,

@@ -146,9 +146,13 @@ void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera
     // and stay in its cache. They go into the frame's once the band is done only if the
     // lines drawn over the whole frame test against them, or the caller keeps them: writing
     // them out would cost much of what the view saves.
+    // A thread of the fabric's colour where springs are not drawn anyway: a piece hanging by
+    // it must not seem to float.
+    const bool lone_springs_drawn = !options.strain_springs &&
+                                    (options.shaded || options.wireframe) &&
+                                    !view.lone_springs().empty();
     const bool lines_drawn =
-        options.wireframe || options.strain_springs || options.particles ||
-        ((options.shaded || options.wireframe) && !view.lone_springs().empty());
+        options.wireframe || options.strain_springs || options.particles || lone_springs_drawn;
     const bool depths_kept = options.keep_depths || lines_drawn;
     const int threads = pool ? pool->thread_count() : 1;
     auto draw_band = [&](int band) {
@@ -191,8 +195,7 @@ void render_frame(raster::Framebuffer& framebuffer, const raster::Camera& camera
         if (options.strain_springs)
             raster::draw_indexed_lines(framebuffer, camera, view.positions(), view.spring_lines(),
                                        spring_colours, lines);
-        else if ((options.shaded || options.wireframe) && !view.lone_springs().empty())
-            // A thread of the fabric's colour: a piece hanging by it must not seem to float.
+        else if (lone_springs_drawn)
             raster::draw_indexed_lines(framebuffer, camera, view.positions(), view.lone_springs(),
                                        raster::to_rgba8(options.surface.front_colour), lines);
         if (options.particles)

@@ -90,38 +90,30 @@ void flux_row(const float* __restrict iso, const float* __restrict ax, const flo
     }
 }
 
-// y += w (the spring that starts here) - w' (the one that ends here: B[p - o] (v_p - v_{p-o})
-// is exactly -w[p - o], negation being exact) over a row.
-void add_flux_difference(const float* __restrict wx, const float* __restrict wy,
-                         const float* __restrict wz, const float* __restrict ex,
-                         const float* __restrict ey, const float* __restrict ez,
-                         float* __restrict yx, float* __restrict yy, float* __restrict yz,
-                         int cols) {
+// y = mask (m v + Σ_k (w_k - w'_k)) over a row, for the K directions of the stencil: w_k the
+// term of the spring that starts at each particle and w'_k that of the one that ends there
+// (B[p - o] (v_p - v_{p-o}) is exactly -w_k[p - o], negation being exact). One loop writes y
+// once, where a loop a direction read and wrote y again each time; each particle's sum is
+// still taken m v first, then the directions in order, so the bits are the same.
+template <int K>
+void accumulate_row(const float* __restrict mass, const float* __restrict x,
+                    const float* __restrict y, const float* __restrict z,
+                    const float* const (&w)[3][max_directions],
+                    const float* const (&w_end)[3][max_directions], const float* __restrict mask,
+                    float* __restrict yx, float* __restrict yy, float* __restrict yz, int cols) {
+    // The terms live in the band's ring and v, m and the mask in their own arrays, never in
+    // y's: no iteration reads what another writes.
+#pragma GCC ivdep
     for (int c = 0; c < cols; ++c) {
-        yx[c] += wx[c] - ex[c];
-        yy[c] += wy[c] - ey[c];
-        yz[c] += wz[c] - ez[c];
-    }
-}
-
-// y = m v over n particles.
-void scale_row(const float* __restrict mass, const float* __restrict x, const float* __restrict y,
-               const float* __restrict z, float* __restrict yx, float* __restrict yy,
-               float* __restrict yz, int n) {
-    for (int c = 0; c < n; ++c) {
-        yx[c] = mass[c] * x[c];
-        yy[c] = mass[c] * y[c];
-        yz[c] = mass[c] * z[c];
-    }
-}
-
-// y *= mask over n particles.
-void mask_row(const float* __restrict mask, float* __restrict yx, float* __restrict yy,
-              float* __restrict yz, int n) {
-    for (int c = 0; c < n; ++c) {
-        yx[c] *= mask[c];
-        yy[c] *= mask[c];
-        yz[c] *= mask[c];
+        float sx = mass[c] * x[c], sy = mass[c] * y[c], sz = mass[c] * z[c];
+        for (int k = 0; k < K; ++k) {
+            sx += w[0][k][c] - w_end[0][k][c];
+            sy += w[1][k][c] - w_end[1][k][c];
+            sz += w[2][k][c] - w_end[2][k][c];
+        }
+        yx[c] = sx * mask[c];
+        yy[c] = sy * mask[c];
+        yz[c] = sz * mask[c];
     }
 }
 
@@ -163,26 +155,56 @@ class BandProduct {
     void row(int row, const Field3& y) {
         compute_fluxes(row);
         const std::size_t base = at(job_, row);
-        const int cols = job_.cols;
-        scale_row(job_.mass_diagonal + base, v_.x + base, v_.y + base, v_.z + base, y.x + base,
-                  y.y + base, y.z + base, cols);
-        for (int k = 0; k < job_.direction_count; ++k) {
+        static_assert(max_directions == 6, "one case a direction count");
+        switch (job_.direction_count) {
+            case 0:
+                accumulate<0>(row, base, y);
+                break;
+            case 1:
+                accumulate<1>(row, base, y);
+                break;
+            case 2:
+                accumulate<2>(row, base, y);
+                break;
+            case 3:
+                accumulate<3>(row, base, y);
+                break;
+            case 4:
+                accumulate<4>(row, base, y);
+                break;
+            case 5:
+                accumulate<5>(row, base, y);
+                break;
+            default:
+                accumulate<6>(row, base, y);
+                break;
+        }
+        if (filter_contacts_)
+            filter_contacts_row(job_.contact_normal.x + base, job_.contact_normal.y + base,
+                                job_.contact_normal.z + base, y.x + base, y.y + base, y.z + base,
+                                job_.cols);
+    }
+
+  private:
+    // accumulate_row over the first K directions' terms for this row.
+    template <int K>
+    void accumulate(int row, std::size_t base, const Field3& y) const {
+        const float* w[3][max_directions] = {};
+        const float* w_end[3][max_directions] = {};
+        for (int k = 0; k < K; ++k) {
             const DirectionTerms& d = job_.directions[k];
             // Springs that would start above the grid read the row of zeros.
             const int from_row = row - d.row_step;
             const float* here = flux(k, row);
             const float* there = (from_row >= 0 ? flux(k, from_row) : zero_row_) - d.col_step;
-            add_flux_difference(here, here + padded_, here + 2 * padded_, there, there + padded_,
-                                there + 2 * padded_, y.x + base, y.y + base, y.z + base, cols);
+            for (std::size_t a = 0; a < 3; ++a) {
+                w[a][k] = here + a * padded_;
+                w_end[a][k] = there + a * padded_;
+            }
         }
-        mask_row(job_.free + base, y.x + base, y.y + base, y.z + base, cols);
-        if (filter_contacts_)
-            filter_contacts_row(job_.contact_normal.x + base, job_.contact_normal.y + base,
-                                job_.contact_normal.z + base, y.x + base, y.y + base, y.z + base,
-                                cols);
+        accumulate_row<K>(job_.mass_diagonal + base, v_.x + base, v_.y + base, v_.z + base, w,
+                          w_end, job_.free + base, y.x + base, y.y + base, y.z + base, job_.cols);
     }
-
-  private:
     float* flux(int k, int row) const {
         return ring_ +
                (static_cast<std::size_t>(row % ring_rows) * max_directions + k) * 3 * padded_ +

@@ -538,12 +538,21 @@ double ImplicitMultilevel::apply(const implicit_kernel::Job& job, bool restricte
                 for (std::size_t k = 0; k < 3 * static_cast<std::size_t>(first.cols); ++k)
                     added_here += weight * first.residual[3 * nodes + k] * corrections[k];
                 added_by_row[static_cast<std::size_t>(row)] = added_here;
+                // Each node's correction rounded once and written to both its fine columns
+                // (the last node of an odd row has one).
                 float* x = &spread[3 * static_cast<std::size_t>(row) * cols];
-                for (std::size_t c = 0; c < cols; ++c) {
+                for (std::size_t c = 0; c < cols; c += 2) {
                     const double* correction = &corrections[3 * (c / 2)];
-                    x[c] = static_cast<float>(weight * correction[0]);
-                    x[cols + c] = static_cast<float>(weight * correction[1]);
-                    x[2 * cols + c] = static_cast<float>(weight * correction[2]);
+                    const auto along_x = static_cast<float>(weight * correction[0]);
+                    const auto along_y = static_cast<float>(weight * correction[1]);
+                    const auto along_z = static_cast<float>(weight * correction[2]);
+                    x[c] = along_x;
+                    x[cols + c] = along_y;
+                    x[2 * cols + c] = along_z;
+                    if (c + 1 == cols) break;
+                    x[c + 1] = along_x;
+                    x[cols + c + 1] = along_y;
+                    x[2 * cols + c + 1] = along_z;
                 }
                 for (int r = 2 * row; r < std::min(2 * row + 2, job.rows); ++r) {
                     const std::size_t base = job.pad + static_cast<std::size_t>(r) * cols;

@@ -73,7 +73,10 @@ struct Job {
     // The first coarse level of the preconditioner (integrators/implicit_multilevel.h), when
     // attached: the passes that finish a pair of rows' residual sum it into the pair's coarse
     // nodes (3 doubles each) and multiply by the nodes' inverse diagonal blocks.
-    int coarse_cols = 0;                     // 0: not attached
+    int coarse_cols = 0;  // 0: not attached
+    // The preconditioner depends on the residual (the K-cycle, implicit_k_cycle.h): the
+    // update pass also sums r_new · z_old, for flexible conjugate gradient's β.
+    bool flexible = false;
     double* coarse_residual = nullptr;       // 3 per node
     double* coarse_correction = nullptr;     // 3 per node
     const double* coarse_inverse = nullptr;  // 6 per node
@@ -129,7 +132,8 @@ void direction_rows_baseline(const Job& job, int begin, int end, float beta, Row
 void direction_rows_avx2(const Job& job, int begin, int end, float beta, RowSums sums);
 void direction_rows_avx512(const Job& job, int begin, int end, float beta, RowSums sums);
 
-// Pass 4 (every iteration): v1 += α d, r -= α q, z = P r; sums r·z, r·r.
+// Pass 4 (every iteration): v1 += α d, r -= α q, z = P r; sums r·z, r·r, and when the job is
+// flexible, r · (z before this pass) in third.
 void update_rows_baseline(const Job& job, int begin, int end, float alpha, RowSums sums);
 void update_rows_avx2(const Job& job, int begin, int end, float alpha, RowSums sums);
 void update_rows_avx512(const Job& job, int begin, int end, float alpha, RowSums sums);

@@ -588,6 +588,8 @@ void update_rows(const Job& job, int begin, int end, float alpha, RowSums sums) 
         add_scaled_in_place(job.residual.x + base, -alpha, job.product.x + base, job.cols);
         add_scaled_in_place(job.residual.y + base, -alpha, job.product.y + base, job.cols);
         add_scaled_in_place(job.residual.z + base, -alpha, job.product.z + base, job.cols);
+        if (job.flexible)
+            sums.third[row] = row_dot(job.residual, job.preconditioned, base, job.cols);
         precondition_row(job, row);
         sums.first[row] = row_dot(job.residual, job.preconditioned, base, job.cols);
         sums.second[row] = row_dot(job.residual, job.residual, base, job.cols);

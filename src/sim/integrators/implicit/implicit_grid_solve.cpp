@@ -247,6 +247,7 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
         kernel_of(level, implicit_kernel::smooth_rows_baseline, implicit_kernel::smooth_rows_avx2,
                   implicit_kernel::smooth_rows_avx512);
     const bool multilevel = settings.multilevel;
+    job.flexible = false;  // until the coarse levels are built with a K-cycle
     // The local bound (ImplicitSolveSettings): the largest velocity error a particle may
     // keep, by the block-Jacobi estimate. Not for a fixed tolerance, which studies ask for
     // alone.
@@ -294,7 +295,9 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
             if (first_round) {
                 solver.multilevel.weight = settings.coarse_weight;
                 solver.multilevel.smoothing = settings.coarse_smoothing;
+                solver.multilevel.k_cycle_nodes = settings.k_cycle_nodes;
                 solver.multilevel.build(job, pool, level);
+                job.flexible = solver.multilevel.uses_k_cycle;
                 clock.lap(phases.coarse_levels);
             }
             r_z += solver.multilevel.apply(job, false, pool);
@@ -334,7 +337,10 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
             if (multilevel) next_r_z += solver.multilevel.apply(job, true, pool);
             r_r = sum_rows(row_sums.second, rows);
             largest_z = largest_of_rows(row_sums.largest, rows);
-            beta = r_z > 0.0 ? next_r_z / r_z : 0.0;
+            // Flexible (Polak-Ribière) where the preconditioner varies with r: β =
+            // r_new · (z_new - z_old) / r_old · z_old, which is Fletcher-Reeves' for a fixed one.
+            const double new_old = job.flexible ? sum_rows(row_sums.third, rows) : 0.0;
+            beta = r_z > 0.0 ? (next_r_z - new_old) / r_z : 0.0;
             r_z = next_r_z;
             ++iteration;
         }

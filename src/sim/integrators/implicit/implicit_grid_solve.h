@@ -66,6 +66,9 @@ struct ImplicitSolveSettings {
     bool multilevel = true;       // add the coarse levels to the block-Jacobi preconditioner
     double coarse_weight = 1.0;
     double coarse_smoothing = 0.8;  // ω of the first coarse level's V-cycle (0: additive)
+    // The second coarse level is solved by a K-cycle (implicit_k_cycle.h) from this many
+    // nodes (a 256² sheet's has 4096); below, its additive correction stays. Negative: never.
+    int k_cycle_nodes = 4096;
     // A step that leaves some spring beyond split_stretch_ratio rest lengths and some
     // spring's force further than split_force_error × k L from what the linearised step
     // assumed is linearised again where it ended (a Newton iteration), up to

@@ -435,6 +435,8 @@ void ImplicitMultilevel::build(const implicit_kernel::Job& job, WorkerPool* pool
     build_from_fine(levels[0], job, count > 1 && smoothing > 0.0 ? &first_rows : nullptr, pool);
     for (std::size_t l = 1; l < count; ++l) build_from_coarse(levels[l], levels[l - 1]);
     factor_exactly(levels.back(), exact);
+    uses_k_cycle = smoothing > 0.0 && ImplicitKCycle::worth(levels, k_cycle_nodes);
+    if (uses_k_cycle) k_cycle.build(levels, level);
 }
 
 void ImplicitMultilevel::attach(implicit_kernel::Job& job) {
@@ -485,7 +487,10 @@ double ImplicitMultilevel::apply(const implicit_kernel::Job& job, bool restricte
             restrict_smoothed_residual(levels, first_rows, smoothing, fine_particles, pool);
         else
             restrict_to_coarser(levels, 0);
-        apply_level(levels, exact, 1, weight);
+        if (uses_k_cycle)
+            k_cycle.apply(levels, exact, smoothing, pool);
+        else
+            apply_level(levels, exact, 1, weight);
     }
     // Pass 2, by pairs of rows of the first level: its correction (the V-cycle's second
     // smoothing, or D_1⁻¹ r_1 plus the second level's), r · P x_c = (Pᵀ r) · x_c per row of

@@ -25,6 +25,11 @@
 // being each other's transpose, it stays symmetric; it stays positive definite for
 // ω λ_max(D_1⁻¹ A_1) < 2, and λ_max ≤ 2 for a sum of positive semi-definite spring blocks
 // (x_i - x_j)ᵀ B (x_i - x_j) ≤ 2 (x_iᵀ B x_i + x_jᵀ B x_j) plus the mass.
+//
+// On large sheets (ImplicitSolveSettings::k_cycle_nodes) the V-cycle's coarse solve, the
+// second level, is a K-cycle (implicit_k_cycle.h) instead of block Jacobi and the additive
+// levels below: the iteration count then grows less with the sheet's size. The
+// preconditioner then depends on the residual, and the outer solve is flexible.
 #pragma once
 
 #include <cstddef>
@@ -34,6 +39,7 @@
 #include "sim/integrators/implicit/banded_cholesky.h"
 #include "sim/integrators/implicit/implicit_coarse_rows.h"
 #include "sim/integrators/implicit/implicit_grid_kernel.h"
+#include "sim/integrators/implicit/implicit_k_cycle.h"
 
 namespace weft {
 
@@ -56,6 +62,11 @@ struct ImplicitMultilevel {
     CoarseRows first_rows;                    // the first level's matrix in float, for it
     std::vector<double> added_by_row;         // r · P x_c per row of the first level
     std::vector<float> spread;  // the first level's correction along fine columns (x, y, z rows)
+    // On large sheets the second level is solved by a K-cycle (implicit_k_cycle.h), not
+    // by its block Jacobi and the additive levels below.
+    ImplicitKCycle k_cycle;
+    int k_cycle_nodes = 4096;  // the second level's nodes from which it has one (< 0: never)
+    bool uses_k_cycle = false;
 
     // Builds every coarse level from the fine system of `job` (its direction terms, the
     // diagonal blocks and the free mask of the setup and residual passes); the first level's

@@ -3,10 +3,10 @@
 //
 // The coarse levels aggregate 2x2 nodes into one, piecewise constant. Such aggregates
 // approximate the smooth modes poorly, and each level loses a little: with a V-cycle on the
-// first coarse level and block Jacobi below, conjugate gradient takes about 1.55 times the
-// iterations for twice the sheet's side. The K-cycle's remedy is to solve the second level
-// better than one V-cycle does: two steps of flexible conjugate gradient on that level,
-// preconditioned by a symmetric V-cycle there (whose own coarse solve is a V-cycle on the
+// first coarse level and block Jacobi below, conjugate gradient takes more iterations the
+// larger the sheet (docs/performance.md has the counts). The K-cycle's remedy is to solve the
+// second level better than one V-cycle does: two steps of flexible conjugate gradient on that
+// level, preconditioned by a symmetric V-cycle there (whose own coarse solve is a V-cycle on the
 // next level, and so on down to the exact coarsest). The two steps choose the best
 // combination of the two V-cycle corrections in the level's energy norm, which undoes the
 // aggregates' poor scaling without a tuned weight. The preconditioner then depends on the

@@ -68,7 +68,7 @@ struct ImplicitSolveSettings {
     double coarse_smoothing = 0.8;  // ω of the first coarse level's V-cycle (0: additive)
     // The second coarse level is solved by a K-cycle (implicit_k_cycle.h) from this many
     // nodes (a 256² sheet's has 4096); below, its additive correction stays. Negative: never.
-    int k_cycle_nodes = 4096;
+    int k_cycle_nodes = ImplicitKCycle::default_min_nodes;
     // A step that leaves some spring beyond split_stretch_ratio rest lengths and some
     // spring's force further than split_force_error × k L from what the linearised step
     // assumed is linearised again where it ended (a Newton iteration), up to

@@ -20,24 +20,29 @@ void over_level_rows(int rows, int nodes, WorkerPool* pool, Pass&& pass) {
                     });
 }
 
-// out's row `row` = (A v) there.
-void multiply_into(const KCycleLevel& level, const CoarseField& v, int row, CoarseField& out) {
-    multiply_coarse_row(level.matrix, row, v.row(row - 1), v.row(row), v.row(row + 1),
-                        out.at(0, row), out.at(1, row), out.at(2, row));
-}
-
-// A row's product with the level's matrix, into a thread's scratch row (3 × cols floats).
+// A row of the level's product A v, written to three rows of cols floats.
 struct ProductRow {
     float* x;
     float* y;
     float* z;
 };
+void multiply(const KCycleLevel& level, const CoarseField& v, int row, const ProductRow& out) {
+    multiply_coarse_row(level.matrix, row, v.row(row - 1), v.row(row), v.row(row + 1), out.x, out.y,
+                        out.z);
+}
+
+// out's row `row` = (A v) there.
+void multiply_into(const KCycleLevel& level, const CoarseField& v, int row, CoarseField& out) {
+    multiply(level, v, row, {out.at(0, row), out.at(1, row), out.at(2, row)});
+}
+
+// A row's product into a thread's scratch row (3 × cols floats).
 ProductRow multiply_row(const KCycleLevel& level, const CoarseField& v, int row) {
     thread_local std::vector<float> scratch;  // grown once: no step allocates
-    scratch.resize(3 * static_cast<std::size_t>(level.cols));
-    ProductRow p{scratch.data(), scratch.data() + level.cols, scratch.data() + 2 * level.cols};
-    multiply_coarse_row(level.matrix, row, v.row(row - 1), v.row(row), v.row(row + 1), p.x, p.y,
-                        p.z);
+    scratch.resize(3 * static_cast<std::size_t>(level.cols()));
+    const ProductRow p{scratch.data(), scratch.data() + level.cols(),
+                       scratch.data() + 2 * level.cols()};
+    multiply(level, v, row, p);
     return p;
 }
 
@@ -45,15 +50,15 @@ ProductRow multiply_row(const KCycleLevel& level, const CoarseField& v, int row)
 void inverse_times(const KCycleLevel& level, int row, float scale, const float* __restrict bx,
                    const float* __restrict by, const float* __restrict bz, float* __restrict ox,
                    float* __restrict oy, float* __restrict oz) {
-    const std::size_t plane = static_cast<std::size_t>(level.rows) * level.cols;
-    const float* inv = level.inverse.data() + static_cast<std::size_t>(row) * level.cols;
+    const std::size_t plane = static_cast<std::size_t>(level.rows()) * level.cols();
+    const float* inv = level.inverse.data() + static_cast<std::size_t>(row) * level.cols();
     const float* __restrict xx = inv;
     const float* __restrict yy = inv + plane;
     const float* __restrict zz = inv + 2 * plane;
     const float* __restrict xy = inv + 3 * plane;
     const float* __restrict xz = inv + 4 * plane;
     const float* __restrict yz = inv + 5 * plane;
-    for (int c = 0; c < level.cols; ++c) {
+    for (int c = 0; c < level.cols(); ++c) {
         const float x = bx[c], y = by[c], z = bz[c];
         ox[c] = scale * (xx[c] * x + xy[c] * y + xz[c] * z);
         oy[c] = scale * (xy[c] * x + yy[c] * y + yz[c] * z);
@@ -97,8 +102,6 @@ void ImplicitKCycle::build(const std::vector<ImplicitCoarseLevel>& levels, SimdL
     for (std::size_t k = 0; k < levels_.size(); ++k) {
         const ImplicitCoarseLevel& from = levels[k + 1];
         KCycleLevel& level = levels_[k];
-        level.rows = from.rows;
-        level.cols = from.cols;
         level.matrix.kernel_build = simd;
         level.matrix.size_for(from.rows, from.cols);
         const auto plane = static_cast<std::size_t>(from.rows) * from.cols;
@@ -122,8 +125,8 @@ void ImplicitKCycle::build(const std::vector<ImplicitCoarseLevel>& levels, SimdL
     const KCycleLevel& top = levels_[0];
     for (CoarseField* field :
          {&first_result, &second_result, &first_product, &second_product, &second_rhs})
-        field->size_for(top.rows, top.matrix.row_floats);
-    row_sums.resize(3 * static_cast<std::size_t>(top.rows));
+        field->size_for(top.rows(), top.matrix.row_floats);
+    row_sums.resize(3 * static_cast<std::size_t>(top.rows()));
     exact_values.resize(levels.back().residual.size());
 }
 
@@ -133,15 +136,15 @@ void ImplicitKCycle::build(const std::vector<ImplicitCoarseLevel>& levels, SimdL
 void ImplicitKCycle::v_cycle(std::size_t k, const CoarseField& rhs, CoarseField& out,
                              bool start_done, const BandedCholesky& exact, WorkerPool* pool) {
     KCycleLevel& level = levels_[k];
-    const int nodes = level.rows * level.cols;
+    const int nodes = level.rows() * level.cols();
     if (!start_done)
-        over_level_rows(level.rows, nodes, pool,
+        over_level_rows(level.rows(), nodes, pool,
                         [&](int row) { inverse_times(level, row, omega, rhs, level.iterate); });
 
     // The coarser level's right-hand side: b - A x summed over each aggregate, by rows of the
     // coarser level, its fine rows and columns in order.
     const bool coarsest_below = k + 1 == levels_.size();
-    const int coarse_rows = (level.rows + 1) / 2, coarse_cols = (level.cols + 1) / 2;
+    const int coarse_rows = (level.rows() + 1) / 2, coarse_cols = (level.cols() + 1) / 2;
     over_level_rows(coarse_rows, nodes, pool, [&](int coarse_row) {
         float* into[3] = {};
         if (!coarsest_below)
@@ -152,16 +155,16 @@ void ImplicitKCycle::v_cycle(std::size_t k, const CoarseField& rhs, CoarseField&
         double* exact_row =
             exact_values.data() + 3 * static_cast<std::size_t>(coarse_row) * coarse_cols;
         if (coarsest_below) std::fill(exact_row, exact_row + 3 * coarse_cols, 0.0);
-        for (int row = 2 * coarse_row; row < std::min(2 * coarse_row + 2, level.rows); ++row) {
+        for (int row = 2 * coarse_row; row < std::min(2 * coarse_row + 2, level.rows()); ++row) {
             const ProductRow p = multiply_row(level, level.iterate, row);
             const float* product[3] = {p.x, p.y, p.z};
             for (int a = 0; a < 3; ++a) {
                 const float* b = rhs.at(a, row);
                 if (coarsest_below)
-                    for (int c = 0; c < level.cols; ++c)
+                    for (int c = 0; c < level.cols(); ++c)
                         exact_row[3 * (c / 2) + a] += static_cast<double>(b[c] - product[a][c]);
                 else
-                    for (int c = 0; c < level.cols; ++c) into[a][c / 2] += b[c] - product[a][c];
+                    for (int c = 0; c < level.cols(); ++c) into[a][c / 2] += b[c] - product[a][c];
             }
         }
     });
@@ -171,35 +174,35 @@ void ImplicitKCycle::v_cycle(std::size_t k, const CoarseField& rhs, CoarseField&
         exact.solve(exact_values.data());
     else
         v_cycle(k + 1, levels_[k + 1].rhs, levels_[k + 1].result, false, exact, pool);
-    over_level_rows(level.rows, nodes, pool, [&](int row) {
+    over_level_rows(level.rows(), nodes, pool, [&](int row) {
         for (int a = 0; a < 3; ++a) {
             float* x = level.iterate.at(a, row);
             if (coarsest_below) {
                 const double* below =
                     exact_values.data() + 3 * static_cast<std::size_t>(row / 2) * coarse_cols;
-                for (int c = 0; c < level.cols; ++c)
+                for (int c = 0; c < level.cols(); ++c)
                     x[c] += static_cast<float>(below[3 * (c / 2) + a]);
             } else {
                 const float* below = levels_[k + 1].result.at(a, row / 2);
-                for (int c = 0; c < level.cols; ++c) x[c] += below[c / 2];
+                for (int c = 0; c < level.cols(); ++c) x[c] += below[c / 2];
             }
         }
     });
 
     // out = x + ω D⁻¹ (b - A x).
-    over_level_rows(level.rows, nodes, pool, [&](int row) {
+    over_level_rows(level.rows(), nodes, pool, [&](int row) {
         const ProductRow p = multiply_row(level, level.iterate, row);
         float* product[3] = {p.x, p.y, p.z};
         for (int a = 0; a < 3; ++a) {
             const float* b = rhs.at(a, row);
-            for (int c = 0; c < level.cols; ++c) product[a][c] = b[c] - product[a][c];
+            for (int c = 0; c < level.cols(); ++c) product[a][c] = b[c] - product[a][c];
         }
         inverse_times(level, row, omega, p.x, p.y, p.z, out.at(0, row), out.at(1, row),
                       out.at(2, row));
         for (int a = 0; a < 3; ++a) {
             float* o = out.at(a, row);
             const float* x = level.iterate.at(a, row);
-            for (int c = 0; c < level.cols; ++c) o[c] += x[c];
+            for (int c = 0; c < level.cols(); ++c) o[c] += x[c];
         }
     });
 }
@@ -209,7 +212,7 @@ void ImplicitKCycle::apply(std::vector<ImplicitCoarseLevel>& levels, const Bande
     omega = static_cast<float>(smoothing);
     ImplicitCoarseLevel& second = levels[1];
     KCycleLevel& top = levels_[0];
-    const int rows = top.rows, cols = top.cols, nodes = rows * cols;
+    const int rows = top.rows(), cols = top.cols(), nodes = rows * cols;
     auto sum_of = [&](int which) {
         double sum = 0.0;
         for (int r = 0; r < rows; ++r) sum += row_sums[3 * static_cast<std::size_t>(r) + which];

@@ -57,16 +57,22 @@ struct CoarseField {
 // One coarse level below the first, in float: its matrix, its inverse diagonal blocks and
 // the V-cycle's vectors there.
 struct KCycleLevel {
-    int rows = 0, cols = 0;
     CoarseRows matrix;
     std::vector<float> inverse;  // 6 planes (xx yy zz xy xz yz) of rows × cols; 0 where pinned
     CoarseField rhs;             // b: the residual restricted from the level above
     CoarseField iterate;         // the V-cycle's x
     CoarseField result;          // what the V-cycle returns
+
+    int rows() const { return matrix.rows; }
+    int cols() const { return matrix.cols; }
 };
 
 class ImplicitKCycle {
   public:
+    // The second level's nodes from which a sheet gets the K-cycle by default: a 256²
+    // sheet's (ImplicitSolveSettings::k_cycle_nodes).
+    static constexpr int default_min_nodes = 4096;
+
     // Whether `levels` (the multilevel's, finest coarse level first) get the K-cycle: a
     // second level of at least `min_nodes` that is not the coarsest (solved exactly).
     static bool worth(const std::vector<ImplicitCoarseLevel>& levels, int min_nodes);

@@ -65,7 +65,8 @@ struct ImplicitMultilevel {
     // On large sheets the second level is solved by a K-cycle (implicit_k_cycle.h), not
     // by its block Jacobi and the additive levels below.
     ImplicitKCycle k_cycle;
-    int k_cycle_nodes = 4096;  // the second level's nodes from which it has one (< 0: never)
+    // The second level's nodes from which it has one (< 0: never).
+    int k_cycle_nodes = ImplicitKCycle::default_min_nodes;
     bool uses_k_cycle = false;
 
     // Builds every coarse level from the fine system of `job` (its direction terms, the

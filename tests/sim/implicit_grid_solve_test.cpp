@@ -85,7 +85,7 @@ std::uint64_t implicit_sheet_hash(int threads, const SimulationOptions& options 
     simulation.set_thread_count(threads);
     if (k_cycle) {
         ImplicitSolveSettings settings;
-        settings.k_cycle_nodes = 0;
+        settings.coarse_cycle.k_cycle_nodes = 0;
         simulation.set_implicit_solve_settings(settings);
     }
     for (int s = 0; s < (k_cycle ? 20 : 40); ++s) {
@@ -195,7 +195,7 @@ TEST(ImplicitGridSolve, TheFirstCoarseLevelsVCycleFindsTheSameStepsInFewerIterat
     // Measured: 64² sheet, 30 steps of 1/60 s, 25.3 against 36.3 iterations a step, the
     // positions 0.04 mm apart after a fall of 1.37 m.
     ImplicitSolveSettings additive;
-    additive.coarse_smoothing = 0.0;
+    additive.coarse_cycle.smoothing = 0.0;
     expect_same_steps_in_fewer_iterations(
         run_both(cloth_material_sheet(64, 1.0 / 60.0), ImplicitSolveSettings{}, additive));
 }
@@ -207,8 +207,8 @@ TEST(ImplicitGridSolve, TheKCycleFindsTheSameStepsInFewerIterations) {
     // the energy's best combination, or an outer solve that lost its conjugacy to the
     // preconditioner's change with the residual, would cost iterations instead.
     ImplicitSolveSettings k_cycle, additive;
-    k_cycle.k_cycle_nodes = 0;
-    additive.k_cycle_nodes = -1;
+    k_cycle.coarse_cycle.k_cycle_nodes = 0;
+    additive.coarse_cycle.k_cycle_nodes = -1;
     expect_same_steps_in_fewer_iterations(
         run_both(cloth_material_sheet(96, 1.0 / 60.0), k_cycle, additive));
 }

@@ -293,10 +293,7 @@ bool step_implicit_euler_grid(Cloth& cloth, const ForceField& field, double dt,
             // same in every round); from here on the update passes restrict their residual
             // into the first level on the way.
             if (first_round) {
-                solver.multilevel.weight = settings.coarse_weight;
-                solver.multilevel.smoothing = settings.coarse_smoothing;
-                solver.multilevel.k_cycle_nodes = settings.k_cycle_nodes;
-                solver.multilevel.build(job, pool, level);
+                solver.multilevel.build(job, settings.coarse_cycle, pool, level);
                 job.flexible = solver.multilevel.uses_k_cycle;
                 clock.lap(phases.coarse_levels);
             }

@@ -61,14 +61,10 @@ struct ImplicitSolveSettings {
     // iterations, v1 += ω P_J r, removes most of what they left, for a pass over the particles
     // without a product. With ω λ_max(P_J A) < 2 (λ_max ≤ 2, as for the coarse levels in
     // implicit_multilevel.h) the step never adds error in the energy norm.
-    double post_smoothing = 0.5;  // ω of that step (0: none)
-    bool warm_start = true;       // start from v0 + the previous step's Δv instead of v0
-    bool multilevel = true;       // add the coarse levels to the block-Jacobi preconditioner
-    double coarse_weight = 1.0;
-    double coarse_smoothing = 0.8;  // ω of the first coarse level's V-cycle (0: additive)
-    // The second coarse level is solved by a K-cycle (implicit_k_cycle.h) from this many
-    // nodes (a 256² sheet's has 4096); below, its additive correction stays. Negative: never.
-    int k_cycle_nodes = ImplicitKCycle::default_min_nodes;
+    double post_smoothing = 0.5;      // ω of that step (0: none)
+    bool warm_start = true;           // start from v0 + the previous step's Δv instead of v0
+    bool multilevel = true;           // add the coarse levels to the block-Jacobi preconditioner
+    ImplicitCycleShape coarse_cycle;  // how the coarse levels correct (implicit_multilevel.h)
     // A step that leaves some spring beyond split_stretch_ratio rest lengths and some
     // spring's force further than split_force_error × k L from what the linearised step
     // assumed is linearised again where it ended (a Newton iteration), up to

@@ -18,7 +18,7 @@
 //
 // It pays only where the second level is large: it adds six products on it an iteration
 // (and two a V-cycle on each level below), which a small level's few nodes do not repay
-// (ImplicitSolveSettings::k_cycle_nodes).
+// (ImplicitCycleShape::k_cycle_nodes).
 #pragma once
 
 #include <cstddef>
@@ -70,7 +70,7 @@ struct KCycleLevel {
 class ImplicitKCycle {
   public:
     // The second level's nodes from which a sheet gets the K-cycle by default: a 256²
-    // sheet's (ImplicitSolveSettings::k_cycle_nodes).
+    // sheet's (ImplicitCycleShape::k_cycle_nodes).
     static constexpr int default_min_nodes = 4096;
 
     // Whether `levels` (the multilevel's, finest coarse level first) get the K-cycle: a

@@ -423,7 +423,9 @@ void finish_smoothing(const ImplicitCoarseLevel& first, const CoarseRows& matrix
 }
 }  // namespace
 
-void ImplicitMultilevel::build(const implicit_kernel::Job& job, WorkerPool* pool, SimdLevel level) {
+void ImplicitMultilevel::build(const implicit_kernel::Job& job, const ImplicitCycleShape& cycle,
+                               WorkerPool* pool, SimdLevel level) {
+    shape = cycle;
     first_rows.kernel_build = level;
     // Down to a level of at most coarsest_side nodes a side, solved exactly.
     std::size_t count = 0;
@@ -432,10 +434,11 @@ void ImplicitMultilevel::build(const implicit_kernel::Job& job, WorkerPool* pool
         ++count;
     levels.resize(count);
     if (count == 0) return;
-    build_from_fine(levels[0], job, count > 1 && smoothing > 0.0 ? &first_rows : nullptr, pool);
+    build_from_fine(levels[0], job, count > 1 && cycle.smoothing > 0.0 ? &first_rows : nullptr,
+                    pool);
     for (std::size_t l = 1; l < count; ++l) build_from_coarse(levels[l], levels[l - 1]);
     factor_exactly(levels.back(), exact);
-    uses_k_cycle = smoothing > 0.0 && ImplicitKCycle::worth(levels, k_cycle_nodes);
+    uses_k_cycle = cycle.smoothing > 0.0 && ImplicitKCycle::worth(levels, cycle.k_cycle_nodes);
     if (uses_k_cycle) k_cycle.build(levels, level);
 }
 
@@ -451,6 +454,7 @@ void ImplicitMultilevel::attach(implicit_kernel::Job& job) {
 double ImplicitMultilevel::apply(const implicit_kernel::Job& job, bool restricted,
                                  WorkerPool* pool) {
     if (levels.empty()) return 0.0;
+    const double smoothing = shape.smoothing, weight = shape.weight;
     ImplicitCoarseLevel& first = levels[0];
     const int fine_particles = job.rows * job.cols;
     // Pass 1, by rows of the first coarse level: its residual, the sum of its 2x2 fine

@@ -26,7 +26,7 @@
 // ω λ_max(D_1⁻¹ A_1) < 2, and λ_max ≤ 2 for a sum of positive semi-definite spring blocks
 // (x_i - x_j)ᵀ B (x_i - x_j) ≤ 2 (x_iᵀ B x_i + x_jᵀ B x_j) plus the mass.
 //
-// On large sheets (ImplicitSolveSettings::k_cycle_nodes) the V-cycle's coarse solve, the
+// On large sheets (ImplicitCycleShape::k_cycle_nodes) the V-cycle's coarse solve, the
 // second level, is a K-cycle (implicit_k_cycle.h) instead of block Jacobi and the additive
 // levels below: the iteration count then grows less with the sheet's size. The
 // preconditioner then depends on the residual, and the outer solve is flexible.
@@ -52,27 +52,34 @@ struct ImplicitCoarseLevel {
     std::vector<double> correction;  // 3 per node
 };
 
+// How the coarse levels correct.
+struct ImplicitCycleShape {
+    double weight = 1.0;     // scale of each coarse correction
+    double smoothing = 0.8;  // ω of the first level's V-cycle (0: additive)
+    // The second level is solved by a K-cycle (implicit_k_cycle.h) from this many nodes (a
+    // 256² sheet's has 4096); below, its additive correction stays. Negative: never.
+    int k_cycle_nodes = ImplicitKCycle::default_min_nodes;
+};
+
 struct ImplicitMultilevel {
     // The coarsest level has at most this many nodes a side and is solved exactly.
     static constexpr int coarsest_side = 8;
     std::vector<ImplicitCoarseLevel> levels;  // finest coarse level first
     BandedCholesky exact;                     // the coarsest level's factor
-    double weight = 1.0;                      // scale of each coarse correction
-    double smoothing = 0.8;                   // ω of the first level's V-cycle (0: additive)
+    ImplicitCycleShape shape;                 // as given to the last build()
     CoarseRows first_rows;                    // the first level's matrix in float, for it
     std::vector<double> added_by_row;         // r · P x_c per row of the first level
     std::vector<float> spread;  // the first level's correction along fine columns (x, y, z rows)
     // On large sheets the second level is solved by a K-cycle (implicit_k_cycle.h), not
     // by its block Jacobi and the additive levels below.
     ImplicitKCycle k_cycle;
-    // The second level's nodes from which it has one (< 0: never).
-    int k_cycle_nodes = ImplicitKCycle::default_min_nodes;
     bool uses_k_cycle = false;
 
     // Builds every coarse level from the fine system of `job` (its direction terms, the
     // diagonal blocks and the free mask of the setup and residual passes); the first level's
     // products run the kernel build `level` (kernel_build.h).
-    void build(const implicit_kernel::Job& job, WorkerPool* pool, SimdLevel level);
+    void build(const implicit_kernel::Job& job, const ImplicitCycleShape& cycle, WorkerPool* pool,
+               SimdLevel level);
     // z += P (coarse correction of Pᵀ r) over the whole fine grid; returns r · (what it
     // added to z), so the caller's r · z stays exact without another pass. `restricted`:
     // the fine passes have already summed r into the first level (attach() below).

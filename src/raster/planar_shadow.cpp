@@ -95,6 +95,11 @@ void prepare_flat_mesh(const Camera& camera, int width, int height, const MeshVi
                        std::span<const std::uint32_t> used) {
     const std::size_t count = mesh.positions.size();
     prepared.mesh = mesh;
+    // No snapped window corners are kept here, so binning must not load a whole grid's
+    // groups from them (PreparedMesh::snapped_x): it gathers each triangle's corners.
+    prepared.mesh.grid_cols = 0;
+    prepared.snapped_x.clear();
+    prepared.snapped_y.clear();
     prepared.model_is_world = mesh.model == glm::mat4(1.0f);
     prepared.clip.resize(count);
     prepared.outcodes.resize(count);

@@ -124,15 +124,12 @@ TEST(PlanarShadow, OverlappingLayersDrawOneColourNotADarkerOne) {
     EXPECT_GT(shadowed, 1000);
 }
 
-// A shadow drawn band by band from its binned triangles is the shadow one whole draw casts, to
-// the pixel and the depth: a spiral sheet finer than the pixels, whose layers' shadows fall
-// on one another (the first layer drawn keeps a pixel both reach at one depth), on one
-// thread and on two, with and without the AVX2 classification.
-TEST(PlanarShadow, BandsOfBinnedTrianglesCastWhatOneWholeDrawCasts) {
-    const TriangleMesh spiral = testing::spiral_sheet(300);
+// Draws `caster` flat once whole and once band by band from its binned triangles, for each
+// band height, thread count and with and without the AVX2 classification, and expects the
+// same pixels and depths every time.
+void expect_bands_cast_the_whole_shadow(const MeshView& caster, std::vector<int> band_heights,
+                                        std::vector<int> thread_counts) {
     const Camera camera = make_camera({0.4f, 2.5f, 2.0f}, {0.0f, -1.0f, 0.0f}, 60.0f);
-    MeshView caster = spiral.view();
-    caster.model = *shadow_projection({0.36f, 0.8f, 0.48f}, -1.0f);
     const int width = 211, height = 163;
     PreparedMesh prepared;
     prepare_flat_mesh(camera, width, height, caster, prepared);
@@ -141,8 +138,8 @@ TEST(PlanarShadow, BandsOfBinnedTrianglesCastWhatOneWholeDrawCasts) {
     whole.clear(background);
     draw_flat_mesh(whole, prepared, dark);
     ASSERT_GT(std::count(whole.colours().begin(), whole.colours().end(), dark), 2000);
-    for (int band_height : {1, 7, 32}) {
-        for (int threads : {1, 2}) {
+    for (int band_height : band_heights) {
+        for (int threads : thread_counts) {
             for (bool avx2 : {false, true}) {
                 WorkerPool pool(threads);
                 TriangleBands bands;
@@ -160,6 +157,30 @@ TEST(PlanarShadow, BandsOfBinnedTrianglesCastWhatOneWholeDrawCasts) {
             }
         }
     }
+}
+
+// A shadow drawn band by band from its binned triangles is the shadow one whole draw casts, to
+// the pixel and the depth: a spiral sheet finer than the pixels, whose layers' shadows fall
+// on one another (the first layer drawn keeps a pixel both reach at one depth), on one
+// thread and on two, with and without the AVX2 classification.
+TEST(PlanarShadow, BandsOfBinnedTrianglesCastWhatOneWholeDrawCasts) {
+    const TriangleMesh spiral = testing::spiral_sheet(300);
+    MeshView caster = spiral.view();
+    caster.model = *shadow_projection({0.36f, 0.8f, 0.48f}, -1.0f);
+    expect_bands_cast_the_whole_shadow(caster, {1, 7, 32}, {1, 2});
+}
+
+// The same for a caster marked as a whole grid (MeshView::grid_cols): flat preparation keeps
+// no window corners for binning to load a grid's groups from, so its binning must gather
+// each triangle's corners as for any other mesh.
+TEST(PlanarShadow, ACasterMarkedAsAWholeGridIsBinnedAsAnyOther) {
+    const int side = 121;
+    const TriangleMesh spiral = testing::spiral_sheet(side - 1);
+    const std::vector<TriangleIndices> grid = testing::whole_grid_triangles(side, side);
+    MeshView caster{spiral.positions, spiral.normals, grid};
+    caster.model = *shadow_projection({0.36f, 0.8f, 0.48f}, -1.0f);
+    caster.grid_cols = side;
+    expect_bands_cast_the_whole_shadow(caster, {7}, {1});
 }
 
 }  // namespace
